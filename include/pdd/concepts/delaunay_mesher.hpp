@@ -1,0 +1,52 @@
+/// \file delaunay_mesher.hpp
+/// The DelaunayMesher concept.
+///
+/// A DelaunayMesher meshes one planar straight-line domain under quality criteria and a
+/// sizing field, and reports which input segments it split.
+///
+/// Requirements: for `const M m`, `const pdd::pslg d`, `const pdd::mesh_criteria c` and any
+/// SizingField `s`, `m.mesh(d, c, s)` returns a pdd::mesher_result. The concept is checked with
+/// pdd::uniform_sizing; models provide `mesh` as a template over SizingField.
+///
+/// Domain: the faces enclosed by an odd number of the pslg's closed segment loops (outer loops
+/// and holes, Triangle's convention), less any region reached from a hole point without
+/// crossing a segment.
+///
+/// Semantics the decoupling proofs rely on (dissertation ch. 1.1, 6.1): the model is a
+/// Delaunay refinement (Ruppert-type) mesher. It never moves or removes input vertices
+/// (their coordinates are copied bit for bit), splits an input segment only when it is
+/// encroached (a vertex inside its diametral circle), keeps the (constrained) Delaunay property,
+/// and never creates an edge shorter than lfs_min when input angles are >= 60 deg. Every
+/// triangle of the result meets the ratio bound and the area bound (criteria.max_area and
+/// s.area_at at the centroid). `split_segments` lists, in increasing order, the indices of the
+/// input segments that are not edges of the final mesh. Many instances may run concurrently on
+/// different inputs.
+///
+/// Models: pdd::cgal::mesher (default).
+#pragma once
+
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/mesh/criteria.hpp>
+#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/sizing/uniform.hpp>
+
+#include <concepts>
+#include <vector>
+
+namespace pdd {
+
+/// What a DelaunayMesher returns.
+struct mesher_result {
+  /// The mesh; its first d.vertices.size() vertices are the input vertices in input order.
+  triangle_mesh mesh;
+  /// Indices of input segments that the mesher split (not edges of the final mesh).
+  std::vector<index_t> split_segments;
+};
+
+template <class M>
+concept DelaunayMesher = requires(const M& m, const pslg& d, const mesh_criteria& c,
+                                  const uniform_sizing& s) {
+  { m.mesh(d, c, s) } -> std::same_as<mesher_result>;
+};
+
+} // namespace pdd

@@ -1,0 +1,52 @@
+/// \file graph_partitioner.hpp
+/// The GraphPartitioner concept and the graph type it works on.
+///
+/// A GraphPartitioner bisects a vertex- and edge-weighted undirected graph, minimising the
+/// weight of the cut edges under a balance bound.
+///
+/// Requirements: for `const P p`, `const pdd::partition_graph g` and
+/// `const pdd::bisection_options o`, `p.bisect(g, o)` returns a std::vector<std::uint8_t> of
+/// size num_vertices(g) with values 0 or 1 (the part of each vertex).
+/// Semantics: both parts are non-empty when g has at least two vertices; the result is a
+/// deterministic function of (g, o); the heavier part weighs at most o.max_part_fraction of
+/// the total when that is achievable (a best effort otherwise). Parts need not be connected:
+/// the library repairs disconnected parts (dissertation 5.1), the partitioner does not have to.
+/// Models: pdd::metis_partitioner (default when METIS is found), pdd::boost_partitioner.
+#pragma once
+
+#include <boost/graph/adjacency_list.hpp>
+
+#include <concepts>
+#include <cstdint>
+#include <vector>
+
+namespace pdd {
+
+/// Vertex property of a partition_graph: its weight (an area in MADD), >= 0.
+struct partition_vertex {
+  double weight = 0.0;
+};
+/// Edge property of a partition_graph: its weight (a separator length in MADD), >= 0.
+struct partition_edge {
+  double weight = 0.0;
+};
+
+/// The graph every GraphPartitioner bisects (parallel edges are allowed; their weights add).
+using partition_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS,
+                                              partition_vertex, partition_edge>;
+
+/// Options of one bisection.
+struct bisection_options {
+  /// Largest fraction of the total vertex weight that the heavier part may take.
+  double max_part_fraction = 0.55;
+  /// Seed of any randomised step (the result is deterministic for a given seed).
+  std::uint64_t seed = 1;
+};
+
+template <class P>
+concept GraphPartitioner = requires(const P& p, const partition_graph& g,
+                                    const bisection_options& o) {
+  { p.bisect(g, o) } -> std::same_as<std::vector<std::uint8_t>>;
+};
+
+} // namespace pdd

@@ -1,0 +1,96 @@
+/// \file errors.hpp
+/// The pdd error hierarchy. Bad input always throws one of these; internal invariants use
+/// PDD_ASSERT, which throws pdd::internal_error with the file and line of the failed check.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd {
+
+/// Base class of every exception pdd throws.
+class error : public std::runtime_error {
+public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Malformed input file: what() reads "file:line: what was expected".
+class input_error : public error {
+public:
+  input_error(std::string file, std::size_t line, const std::string& message)
+      : error(file + ":" + std::to_string(line) + ": " + message), file_(std::move(file)),
+        line_(line) {}
+  const std::string& file() const noexcept { return file_; }
+  std::size_t line() const noexcept { return line_; }
+
+private:
+  std::string file_;
+  std::size_t line_;
+};
+
+/// Invalid geometry (a PSLG that violates the domain definition). ids() names the offending
+/// vertices, segments, holes or loops as the message says.
+class geometry_error : public error {
+public:
+  explicit geometry_error(const std::string& message, std::vector<std::size_t> ids = {})
+      : error(message), ids_(std::move(ids)) {}
+  const std::vector<std::size_t>& ids() const noexcept { return ids_; }
+
+private:
+  std::vector<std::size_t> ids_;
+};
+
+/// The domain cannot be decomposed as asked (too thin, too few junction triangles, ...).
+class decomposition_error : public error {
+public:
+  using error::error;
+};
+
+/// The decoupling path could not be built or was violated beyond repair.
+class decoupling_error : public error {
+public:
+  using error::error;
+};
+
+/// The meshing kernel failed on a subdomain; subdomain() says which (-1: whole domain).
+class meshing_error : public error {
+public:
+  meshing_error(long long subdomain, const std::string& message)
+      : error(subdomain < 0 ? message
+                            : "subdomain " + std::to_string(subdomain) + ": " + message),
+        subdomain_(subdomain) {}
+  long long subdomain() const noexcept { return subdomain_; }
+
+private:
+  long long subdomain_;
+};
+
+/// A resource limit (memory estimate, refinement budget) would be exceeded.
+class limit_error : public error {
+public:
+  using error::error;
+};
+
+/// A broken internal invariant: a bug in pdd, never bad input.
+class internal_error : public error {
+public:
+  using error::error;
+};
+
+namespace detail {
+[[noreturn]] inline void assertion_failed(const char* expr, const char* file, int line) {
+  throw internal_error(std::string(file) + ":" + std::to_string(line) +
+                       ": internal invariant failed: " + expr);
+}
+} // namespace detail
+
+} // namespace pdd
+
+/// Checks an internal invariant (always on; cheap checks only).
+#define PDD_ASSERT(cond)                                                                           \
+  do {                                                                                             \
+    if (!(cond)) ::pdd::detail::assertion_failed(#cond, __FILE__, __LINE__);                       \
+  } while (false)

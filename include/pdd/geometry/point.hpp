@@ -1,0 +1,20 @@
+/// \file point.hpp
+/// The plain coordinate type used in every pdd value type.
+#pragma once
+
+#include <compare>
+#include <cstdint>
+
+namespace pdd {
+
+/// Index type of vertices and triangles in pdd's value types.
+using index_t = std::uint32_t;
+
+/// A point in the plane. Ordered lexicographically (x, then y); equality is exact.
+struct point {
+  double x = 0.0;
+  double y = 0.0;
+  friend constexpr auto operator<=>(const point&, const point&) = default;
+};
+
+} // namespace pdd

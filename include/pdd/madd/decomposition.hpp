@@ -1,0 +1,53 @@
+/// \file decomposition.hpp
+/// pdd::decomposition: the result of MADD (dissertation ch. 3-4): N subdomains as loops over a
+/// shared vertex pool, each loop edge tagged external (an input segment) or interface (a
+/// separator edge shared with exactly one neighbour subdomain).
+#pragma once
+
+#include <pdd/geometry/point.hpp>
+
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+namespace pdd {
+
+inline constexpr index_t no_index = std::numeric_limits<index_t>::max();
+
+/// What a subdomain loop edge lies on.
+struct edge_tag {
+  enum class kind : std::uint8_t { external, interface };
+  kind type = kind::external;
+  /// external: index of the input segment the edge is part of; interface: the interface id.
+  index_t id = no_index;
+  /// external: the input segment's boundary marker; interface: unused (0).
+  int marker = 0;
+  /// interface: the subdomain on the other side; external: no_index.
+  index_t neighbour = no_index;
+};
+
+/// One subdomain: loops[0] is the outer boundary (counter-clockwise), loops[1..] the holes
+/// (clockwise). tags[l][i] describes the edge loops[l][i] -> loops[l][(i + 1) % size].
+struct subdomain {
+  std::vector<std::vector<index_t>> loops;
+  std::vector<std::vector<edge_tag>> tags;
+  double area = 0.0;
+};
+
+/// An interface: the polyline shared by two subdomains (a < b), as vertex ids in the pool.
+struct interface_curve {
+  index_t a = no_index;
+  index_t b = no_index;
+  std::vector<index_t> vertices; ///< the chain, from its lexicographically smaller end
+};
+
+/// A decomposition of a domain into subdomains with a shared vertex pool: both sides of an
+/// interface refer to the same vertex ids, so their coordinates are bitwise identical.
+struct decomposition {
+  std::vector<point> vertices;
+  std::vector<int> vertex_markers; ///< marker of the input vertex or segment, 0 on separators
+  std::vector<subdomain> subdomains;
+  std::vector<interface_curve> interfaces;
+};
+
+} // namespace pdd

@@ -1,0 +1,40 @@
+/// \file criteria.hpp
+/// pdd::mesh_criteria: the quality and size bounds every kernel and pipeline takes.
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace pdd {
+
+/// The minimum angle, in degrees, that corresponds to a circumradius-to-shortest-edge ratio
+/// bound B: sin(theta_min) = 1 / (2 B). For B = sqrt 2 this is 20.7048... degrees.
+inline double min_angle_for_ratio(double ratio) {
+  return std::asin(1.0 / (2.0 * ratio)) * 180.0 / std::numbers::pi;
+}
+/// The circumradius-to-shortest-edge ratio that corresponds to a minimum angle in degrees.
+inline double ratio_for_min_angle(double min_angle_deg) {
+  return 1.0 / (2.0 * std::sin(min_angle_deg * std::numbers::pi / 180.0));
+}
+
+/// Quality criteria for Delaunay refinement.
+struct mesh_criteria {
+  /// Smallest angle allowed in a triangle, degrees (default: ratio sqrt 2, 20.7048 deg).
+  /// Ruppert-type refinement is guaranteed to terminate for <= 20.7 deg with input angles
+  /// >= 60 deg; CGAL's mesher usually terminates up to about 33 deg.
+  double min_angle_deg = min_angle_for_ratio(std::numbers::sqrt2);
+  /// Uniform upper bound on triangle area; infinity means none. A SizingField given next to
+  /// the criteria is combined with it (the smaller bound wins).
+  double max_area = std::numeric_limits<double>::infinity();
+
+  /// The circumradius-to-shortest-edge bound B that min_angle_deg stands for.
+  double ratio_bound() const { return ratio_for_min_angle(min_angle_deg); }
+  /// CGAL's shape bound: sin^2 of the minimum angle (0.125 for 20.7 deg).
+  double shape_bound() const {
+    const double s = std::sin(min_angle_deg * std::numbers::pi / 180.0);
+    return s * s;
+  }
+};
+
+} // namespace pdd

@@ -1,0 +1,45 @@
+// Helpers shared by pdd's tests: paths to data, temporary files, shared/ geometry discovery.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace pdd::test {
+
+/// The repository's bundled data folder (examples/data).
+inline std::filesystem::path bundled_data(const std::string& name) {
+  return std::filesystem::path(PDD_SOURCE_DIR) / "examples" / "data" / name;
+}
+
+/// ../shared/data beside the repository; empty when absent (tests then GTEST_SKIP).
+inline std::filesystem::path shared_data_dir() {
+  std::filesystem::path p(PDD_SHARED_DATA_DIR);
+  std::error_code ec;
+  return std::filesystem::is_directory(p, ec) ? p : std::filesystem::path{};
+}
+
+/// All .poly files in ../shared/data, sorted; empty when absent.
+inline std::vector<std::filesystem::path> shared_poly_files() {
+  std::vector<std::filesystem::path> out;
+  const auto dir = shared_data_dir();
+  if (dir.empty()) return out;
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    if (e.path().extension() == ".poly") out.push_back(e.path());
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// A fresh path in the tests' temporary folder (the file is not created).
+inline std::filesystem::path temp_path(const std::string& name) {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string prefix = info ? std::string(info->test_suite_name()) + "_" + info->name() : "t";
+  for (char& c : prefix)
+    if (c == '/') c = '_';
+  return std::filesystem::path(PDD_TEST_TMP_DIR) / (prefix + "_" + name);
+}
+
+} // namespace pdd::test
