@@ -1,0 +1,199 @@
+/// \file loops.hpp
+/// pdd::find_loops and pdd::domain_area: the closed loops of a PSLG, their orientation and
+/// nesting, and the area of the meshed domain (faces enclosed by an odd number of loops,
+/// Triangle's convention for closed loops with hole points).
+#pragma once
+
+#include <pdd/detail/loops.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/madd/decomposition.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <deque>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd {
+
+/// One closed loop of segments of a PSLG.
+struct polygon_loop {
+  /// The loop's vertices in traversal order; vertices[0] is the smallest vertex id of the
+  /// loop, and the traversal leaves it along its incident segment with the smaller id.
+  std::vector<index_t> vertices;
+  /// segments[i] joins vertices[i] -> vertices[(i + 1) % n].
+  std::vector<index_t> segments;
+  /// Shoelace area of the traversal order (> 0: counter-clockwise).
+  double signed_area = 0.0;
+  /// Exact orientation of the traversal order (CGAL orientation predicate at the
+  /// lexicographically smallest vertex); agrees with the sign of signed_area except when
+  /// rounding makes a near-degenerate loop's area meaningless.
+  bool counterclockwise = true;
+  /// Number of other loops enclosing this loop (0 = outermost).
+  int depth = 0;
+  /// The innermost enclosing loop, or no_index.
+  index_t parent = no_index;
+  /// True if the region just inside the loop belongs to the domain (depth even).
+  bool bounds_domain_inside = true;
+
+  /// True if the domain lies to the left of the traversal direction.
+  bool domain_on_left() const noexcept { return counterclockwise == bounds_domain_inside; }
+};
+
+/// All loops of a PSLG, in the order of their smallest vertex id.
+struct loop_structure {
+  std::vector<polygon_loop> loops;
+};
+
+namespace detail {
+
+/// Traces the loops of a PSLG whose vertices all have degree 2; fills loop_of_segment.
+/// Complexity O(V + S).
+inline std::vector<polygon_loop> trace_loops(const pslg& g, const segment_incidence& inc,
+                                             std::vector<index_t>& loop_of_segment) {
+  std::vector<polygon_loop> loops;
+  loop_of_segment.assign(g.segments.size(), no_index);
+  std::vector<char> seen(g.vertices.size(), 0);
+  for (index_t start = 0; start < g.vertices.size(); ++start) {
+    if (seen[start]) continue;
+    const auto id = static_cast<index_t>(loops.size());
+    polygon_loop loop;
+    index_t v = start;
+    index_t s = std::min(inc.first_two[start][0], inc.first_two[start][1]);
+    do {
+      seen[v] = 1;
+      loop.vertices.push_back(v);
+      loop.segments.push_back(s);
+      loop_of_segment[s] = id;
+      v = other_end(g, s, v);
+      s = inc.first_two[v][0] == s ? inc.first_two[v][1] : inc.first_two[v][0];
+    } while (v != start);
+    if (loop.vertices.size() < 3)
+      throw geometry_error("segments " + id_list(loop.segments) +
+                               " join the same two vertices (duplicate segments)",
+                           std::vector<std::size_t>(loop.segments.begin(), loop.segments.end()));
+    loop.signed_area = shoelace_area(g, loop.vertices);
+    loop.counterclockwise = cycle_is_ccw(g, loop.vertices);
+    loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+/// Floods one nesting component from `start` (level `level`, innermost loop `owner`) across
+/// unconstrained edges; constrained edges met lead into loops, queued in `border`.
+inline void flood_component(const pslg& g, const segment_incidence& inc, loop_triangulation& t,
+                            std::vector<polygon_loop>& loops, pslg_cdt::Face_handle start,
+                            int level, index_t owner,
+                            std::deque<std::pair<pslg_cdt::Face_handle, index_t>>& border) {
+  if (start->info().level != -1) return;
+  start->info().level = level;
+  start->info().owner = owner;
+  std::vector<pslg_cdt::Face_handle> stack{start};
+  while (!stack.empty()) {
+    const auto f = stack.back();
+    stack.pop_back();
+    for (int i = 0; i < 3; ++i) {
+      const auto n = f->neighbor(i);
+      if (n->info().level != -1) continue;
+      if (f->is_constrained(i)) {
+        const index_t u = f->vertex(pslg_cdt::cw(i))->info();
+        const index_t w = f->vertex(pslg_cdt::ccw(i))->info();
+        const index_t s = segment_between(g, inc, u, w);
+        if (s == no_index)
+          throw geometry_error("a vertex lies on a segment between vertices " + std::to_string(u) +
+                                   " and " + std::to_string(w) + "; pdd::validate names it",
+                               {u, w});
+        const index_t l = t.loop_of_segment[s];
+        if (loops[l].depth < 0) {
+          loops[l].depth = level;
+          loops[l].parent = owner;
+        }
+        PDD_ASSERT(loops[l].depth == level);
+        border.emplace_back(n, l);
+      } else {
+        n->info().level = level;
+        n->info().owner = owner;
+        stack.push_back(n);
+      }
+    }
+  }
+}
+
+/// Sets depth and parent of every loop by flood-filling the CDT level by level from the
+/// infinite face (the border queue is FIFO, so levels are visited in increasing order).
+inline void flood_nesting(const pslg& g, const segment_incidence& inc, loop_triangulation& t,
+                          std::vector<polygon_loop>& loops) {
+  if (loops.empty()) return;
+  if (t.cdt.dimension() < 2)
+    throw geometry_error("all vertices are collinear, so the segments overlap; pdd::validate "
+                         "names them");
+  for (auto& l : loops) l.depth = -1;
+  std::deque<std::pair<pslg_cdt::Face_handle, index_t>> border;
+  flood_component(g, inc, t, loops, t.cdt.infinite_face(), 0, no_index, border);
+  while (!border.empty()) {
+    const auto [f, l] = border.front();
+    border.pop_front();
+    flood_component(g, inc, t, loops, f, loops[l].depth + 1, l, border);
+  }
+  for (auto& l : loops) {
+    PDD_ASSERT(l.depth >= 0);
+    l.bounds_domain_inside = l.depth % 2 == 0;
+  }
+}
+
+/// Loops plus the labelled triangulation they were nested with (shared by validate, lfs and
+/// the angle computations so the CDT is built once).
+struct loops_with_triangulation {
+  loop_structure structure;
+  loop_triangulation triangulation;
+};
+
+/// find_loops, keeping the triangulation. \see find_loops
+inline void find_loops_into(const pslg& g, loops_with_triangulation& out) {
+  const segment_incidence inc = incident_segments(g);
+  require_degree_two(g, inc);
+  out.structure.loops = trace_loops(g, inc, out.triangulation.loop_of_segment);
+  build_cdt(g, out.triangulation);
+  flood_nesting(g, inc, out.triangulation, out.structure.loops);
+}
+
+/// True if a face of the labelled triangulation belongs to the meshed domain.
+inline bool in_domain(pslg_cdt::Face_handle f) { return f->info().level % 2 == 1; }
+
+} // namespace detail
+
+/// Finds the closed loops of a PSLG, their orientation and their nesting.
+///
+/// Nesting is computed by a flood fill of the PSLG's constrained Delaunay triangulation
+/// (CGAL, exact predicates) from the unbounded face: crossing a segment of loop L enters the
+/// inside of L one level deeper. depth is the level outside the loop, parent the loop whose
+/// inside (minus its children) is there.
+/// \pre Segments do not intersect except at shared endpoints (see validate()).
+/// \throws geometry_error if a vertex lies on 0 segments ("isolated vertices are not
+///   supported yet") or on other than 2 ("dangling segments and internal constraint segments
+///   are not supported yet", naming vertices and segments), on duplicate vertices or
+///   segments, out-of-range or zero-length segments, and on intersecting segments.
+/// Complexity O(n log n) expected (triangulation); thread-safe (no shared state).
+inline loop_structure find_loops(const pslg& g) {
+  detail::loops_with_triangulation lt;
+  detail::find_loops_into(g, lt);
+  return std::move(lt.structure);
+}
+
+/// Area of a loop structure's domain: loops at even depth add their area, loops at odd
+/// depth (hole boundaries) subtract theirs.
+inline double domain_area(const loop_structure& ls) {
+  double area = 0.0;
+  for (const polygon_loop& l : ls.loops)
+    area += (l.bounds_domain_inside ? 1.0 : -1.0) * std::abs(l.signed_area);
+  return area;
+}
+
+/// Area of the meshed domain: the regions enclosed by an odd number of loops.
+/// \pre As find_loops(). \throws geometry_error as find_loops().
+/// Complexity O(n log n) expected; thread-safe.
+inline double domain_area(const pslg& g) { return domain_area(find_loops(g)); }
+
+} // namespace pdd
