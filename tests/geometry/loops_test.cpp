@@ -42,7 +42,8 @@ TEST(Loops, SingleSquare) {
 
 TEST(Loops, TraversalStartsAtSmallestVertexAlongSmallerSegment) {
   pdd::pslg g;
-  for (point p : square(0, 0, 1)) g.add_vertex(p);
+  for (point p : square(0, 0, 1))
+    g.add_vertex(p);
   // segments listed so that vertex 0's smaller segment goes to vertex 3 (clockwise)
   g.add_segment(3, 0);
   g.add_segment(1, 2);
@@ -60,7 +61,8 @@ TEST(Loops, TraversalStartsAtSmallestVertexAlongSmallerSegment) {
 TEST(Loops, NestedSquaresAlternate) {
   // squares of side 10, 8, 6, 4, 2 nested: domain = 100-64+36-16+4
   pdd::pslg g;
-  for (int i = 0; i < 5; ++i) g.add_loop(square(i, i, 10 - 2 * i, i % 2 == 0));
+  for (int i = 0; i < 5; ++i)
+    g.add_loop(square(i, i, 10 - 2 * i, i % 2 == 0));
   const auto ls = pdd::find_loops(g);
   ASSERT_EQ(ls.loops.size(), 5u);
   for (int i = 0; i < 5; ++i) {
@@ -118,7 +120,8 @@ TEST(Loops, RandomDomainsWithHolesAndIslands) {
       }
       EXPECT_EQ(smallest, l.vertices[0]);
       std::vector<point> pts;
-      for (index_t v : l.vertices) pts.push_back(d.g.vertices[v]);
+      for (index_t v : l.vertices)
+        pts.push_back(d.g.vertices[v]);
       EXPECT_NEAR(l.signed_area, pdd::test::reference_area(pts), 1e-9);
       EXPECT_EQ(l.counterclockwise, l.signed_area > 0);
       EXPECT_EQ(l.depth, d.loops[gl].depth) << seed;

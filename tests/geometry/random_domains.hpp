@@ -35,8 +35,7 @@ inline std::vector<point> random_star(std::mt19937_64& rng, point c, double rmin
                                       int n, bool ccw) {
   std::vector<double> ang(static_cast<std::size_t>(n));
   for (int i = 0; i < n; ++i)
-    ang[static_cast<std::size_t>(i)] =
-        (i + uniform(rng, 0.05, 0.95)) * 2.0 * std::numbers::pi / n;
+    ang[static_cast<std::size_t>(i)] = (i + uniform(rng, 0.05, 0.95)) * 2.0 * std::numbers::pi / n;
   std::vector<point> pts;
   for (double a : ang) {
     const double r = uniform(rng, rmin, rmax);
@@ -81,9 +80,11 @@ inline generated_domain random_domain(std::uint64_t seed, int extra = 4, double 
   }
   // Shuffle vertex ids.
   std::size_t total = 0;
-  for (const auto& l : d.loops) total += l.pts.size();
+  for (const auto& l : d.loops)
+    total += l.pts.size();
   std::vector<index_t> perm(total);
-  for (std::size_t i = 0; i < total; ++i) perm[i] = static_cast<index_t>(i);
+  for (std::size_t i = 0; i < total; ++i)
+    perm[i] = static_cast<index_t>(i);
   std::shuffle(perm.begin(), perm.end(), rng);
   d.g.vertices.resize(total);
   d.g.vertex_markers.assign(total, 0);

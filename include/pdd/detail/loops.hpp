@@ -28,7 +28,9 @@ namespace detail {
 
 using epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-inline epick::Point_2 to_cgal(const point& p) { return {p.x, p.y}; }
+inline epick::Point_2 to_cgal(const point& p) {
+  return {p.x, p.y};
+}
 
 /// Per-face data of the PSLG triangulation: nesting level (number of loops enclosing the
 /// face; -1 before the flood fill), the innermost loop enclosing it, and a dense face id.
@@ -43,8 +45,8 @@ using cdt_face_base = CGAL::Constrained_triangulation_face_base_2<
     epick, CGAL::Triangulation_face_base_with_info_2<cdt_face_info, epick>>;
 using cdt_tds = CGAL::Triangulation_data_structure_2<cdt_vertex_base, cdt_face_base>;
 /// The constrained Delaunay triangulation of a PSLG; constraints must not intersect.
-using pslg_cdt =
-    CGAL::Constrained_Delaunay_triangulation_2<epick, cdt_tds, CGAL::No_constraint_intersection_tag>;
+using pslg_cdt = CGAL::Constrained_Delaunay_triangulation_2<epick, cdt_tds,
+                                                            CGAL::No_constraint_intersection_tag>;
 
 /// Comma-separated list of at most `limit` ids (then ", ...").
 template <class Ids>
@@ -80,8 +82,9 @@ inline segment_incidence incident_segments(const pslg& g) {
                                std::to_string(nv) + " vertices",
                            {s});
     if (sg.a == sg.b)
-      throw geometry_error("segment " + std::to_string(s) + " has zero length (both ends are vertex " +
-                               std::to_string(sg.a) + ")",
+      throw geometry_error("segment " + std::to_string(s) +
+                               " has zero length (both ends are vertex " + std::to_string(sg.a) +
+                               ")",
                            {s});
     for (index_t v : {sg.a, sg.b}) {
       if (inc.degree[v] < 2) inc.first_two[v][inc.degree[v]] = static_cast<index_t>(s);
@@ -153,9 +156,9 @@ inline bool cycle_is_ccw(const pslg& g, const std::vector<index_t>& cycle) {
 /// A PSLG's constrained triangulation with its faces labelled by the nesting flood fill.
 struct loop_triangulation {
   pslg_cdt cdt;
-  std::vector<pslg_cdt::Vertex_handle> vertex;    ///< by PSLG vertex id
-  std::vector<pslg_cdt::Face_handle> faces;       ///< finite faces by cdt_face_info::id
-  std::vector<index_t> loop_of_segment;           ///< by PSLG segment id
+  std::vector<pslg_cdt::Vertex_handle> vertex; ///< by PSLG vertex id
+  std::vector<pslg_cdt::Face_handle> faces;    ///< finite faces by cdt_face_info::id
+  std::vector<index_t> loop_of_segment;        ///< by PSLG segment id
 };
 
 /// The PSLG segment joining vertices u and v (both of degree 2), or no_index.
@@ -185,7 +188,8 @@ inline void build_cdt(const pslg& g, loop_triangulation& t) {
                            {std::min<std::size_t>(i, j), std::max<std::size_t>(i, j)});
     }
   try {
-    for (const segment& s : g.segments) t.cdt.insert_constraint(t.vertex[s.a], t.vertex[s.b]);
+    for (const segment& s : g.segments)
+      t.cdt.insert_constraint(t.vertex[s.a], t.vertex[s.b]);
   } catch (const pslg_cdt::Intersection_of_constraints_exception&) {
     throw geometry_error("segments intersect (cross, overlap or pass through a vertex); "
                          "pdd::validate names them");

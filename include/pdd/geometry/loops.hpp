@@ -129,7 +129,8 @@ inline void flood_nesting(const pslg& g, const segment_incidence& inc, loop_tria
   if (t.cdt.dimension() < 2)
     throw geometry_error("all vertices are collinear, so the segments overlap; pdd::validate "
                          "names them");
-  for (auto& l : loops) l.depth = -1;
+  for (auto& l : loops)
+    l.depth = -1;
   std::deque<std::pair<pslg_cdt::Face_handle, index_t>> border;
   flood_component(g, inc, t, loops, t.cdt.infinite_face(), 0, no_index, border);
   while (!border.empty()) {
@@ -160,7 +161,9 @@ inline void find_loops_into(const pslg& g, loops_with_triangulation& out) {
 }
 
 /// True if a face of the labelled triangulation belongs to the meshed domain.
-inline bool in_domain(pslg_cdt::Face_handle f) { return f->info().level % 2 == 1; }
+inline bool in_domain(pslg_cdt::Face_handle f) {
+  return f->info().level % 2 == 1;
+}
 
 } // namespace detail
 
@@ -194,6 +197,8 @@ inline double domain_area(const loop_structure& ls) {
 /// Area of the meshed domain: the regions enclosed by an odd number of loops.
 /// \pre As find_loops(). \throws geometry_error as find_loops().
 /// Complexity O(n log n) expected; thread-safe.
-inline double domain_area(const pslg& g) { return domain_area(find_loops(g)); }
+inline double domain_area(const pslg& g) {
+  return domain_area(find_loops(g));
+}
 
 } // namespace pdd
