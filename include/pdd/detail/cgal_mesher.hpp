@@ -1,0 +1,310 @@
+/// \file cgal_mesher.hpp
+/// Implementation of pdd::cgal::mesher: the triangulation types, domain marking, the
+/// refinement levels (CGAL Mesh_2's, with segment encroachment seen from the domain only) and
+/// the extraction of the result.
+#pragma once
+
+#include <pdd/errors.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/mesh/triangle_mesh.hpp>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Mesh_2/Clusters.h>
+#include <CGAL/Mesh_2/Refine_edges.h>
+#include <CGAL/Mesh_2/Refine_edges_visitor.h>
+#include <CGAL/Mesh_2/Refine_edges_with_clusters.h>
+#include <CGAL/Mesh_2/Refine_faces.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd::detail::cgal_mesh {
+
+inline constexpr index_t none = std::numeric_limits<index_t>::max();
+
+/// Per-vertex data: the input index (or `none` for a Steiner vertex until numbered) and, for
+/// a Steiner vertex on an input segment, the input endpoints of that segment.
+struct vertex_info {
+  index_t id = none;
+  index_t seg_a = none;
+  index_t seg_b = none;
+};
+
+using kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using vertex_base = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, kernel>;
+/// The face info is the nesting level used while marking the domain.
+using face_base =
+    CGAL::Triangulation_face_base_with_info_2<int, kernel, CGAL::Delaunay_mesh_face_base_2<kernel>>;
+using tds = CGAL::Triangulation_data_structure_2<vertex_base, face_base>;
+/// No constraint may intersect another (CGAL throws), so no vertex is ever constructed.
+using cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<kernel, tds, CGAL::No_constraint_intersection_tag>;
+using vertex_handle = cdt::Vertex_handle;
+using face_handle = cdt::Face_handle;
+using cgal_point = kernel::Point_2;
+
+/// Gabriel test of a constrained edge seen from the domain only: the edge is encroached when
+/// the apex of an adjacent face that is in the domain lies in its closed diametral disk
+/// (CGAL's Is_locally_conforming_Gabriel tests both sides; a vertex beyond the domain, e.g.
+/// across a notch of a subdomain, must not split an interface segment).
+template <class Tr>
+struct domain_gabriel {
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using Face_handle = typename Tr::Face_handle;
+  using Point = typename Tr::Point;
+
+  bool operator()(const Tr& tr, const Face_handle& fh, int i) const {
+    const Vertex_handle& va = fh->vertex(Tr::cw(i));
+    const Vertex_handle& vb = fh->vertex(Tr::ccw(i));
+    const Face_handle nb = fh->neighbor(i);
+    const Vertex_handle& vi = fh->vertex(i);
+    const Vertex_handle& mvi = tr.tds().mirror_vertex(fh, i);
+    if (fh->is_in_domain() && !tr.is_infinite(vi) && !(*this)(tr, va, vb, vi->point()))
+      return false;
+    if (nb->is_in_domain() && !tr.is_infinite(mvi) && !(*this)(tr, va, vb, mvi->point()))
+      return false;
+    return true;
+  }
+
+  bool operator()(const Tr& tr, const Vertex_handle& va, const Vertex_handle& vb) const {
+    Face_handle fh;
+    int i = 0;
+    const bool is_edge = tr.is_edge(va, vb, fh, i);
+    CGAL_assume(is_edge);
+    return (*this)(tr, fh, i);
+  }
+
+  bool operator()(const Tr& tr, const Face_handle& fh, int i, const Point& p) const {
+    return (*this)(tr, fh->vertex(Tr::cw(i)), fh->vertex(Tr::ccw(i)), p);
+  }
+
+  /// p is outside the diametral disk of [va, vb] (exact: the angle va p vb is acute).
+  bool operator()(const Tr& tr, const Vertex_handle& va, const Vertex_handle& vb,
+                  const Point& p) const {
+    return tr.geom_traits().angle_2_object()(va->point(), p, vb->point()) == CGAL::ACUTE;
+  }
+};
+
+/// CGAL's edge level with clusters, using domain_gabriel. After a segment split it restores
+/// the domain marks of the new faces before the encroachment tests (CGAL restores them only
+/// afterwards, in its visitor, which is harmless for its two-sided test but not for ours), and
+/// records on the new vertex the input segment it lies on.
+template <class Tr>
+class domain_edges_base
+    : public CGAL::Mesh_2::Refine_edges_base_with_clusters<Tr, domain_gabriel<Tr>> {
+  using super = CGAL::Mesh_2::Refine_edges_base_with_clusters<Tr, domain_gabriel<Tr>>;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using Face_handle = typename Tr::Face_handle;
+
+public:
+  domain_edges_base(Tr& t, CGAL::Mesh_2::Clusters<Tr>& c) : super(t, c) {}
+
+  void after_insertion_impl(const Vertex_handle& v) {
+    restore_marks(v);
+    const vertex_info& a = this->visitor_va->info();
+    const vertex_info& b = this->visitor_vb->info();
+    vertex_info& vi = v->info();
+    if (a.seg_a != none) {
+      vi.seg_a = a.seg_a;
+      vi.seg_b = a.seg_b;
+    } else if (b.seg_a != none) {
+      vi.seg_a = b.seg_a;
+      vi.seg_b = b.seg_b;
+    } else {
+      vi.seg_a = a.id;
+      vi.seg_b = b.id;
+    }
+    super::after_insertion_impl(v);
+  }
+
+private:
+  // Same walk as CGAL::Mesh_2::Refine_edges_visitor::after_insertion.
+  void restore_marks(const Vertex_handle& v) {
+    Tr& t = this->tr;
+    Face_handle fh;
+    int i = 0;
+    t.is_edge(this->visitor_va, v, fh, i);
+    auto fc = t.incident_faces(v, fh);
+    const auto begin = fc;
+    do {
+      if (!t.is_infinite(fc)) fc->set_in_domain(this->visitor_mark_at_right);
+      ++fc;
+    } while (fc->vertex(Tr::ccw(fc->index(v))) != this->visitor_vb);
+    do {
+      if (!t.is_infinite(fc)) fc->set_in_domain(this->visitor_mark_at_left);
+      ++fc;
+    } while (fc != begin);
+  }
+};
+
+/// Marks the domain: faces enclosed by an odd number of constrained loops (nesting level
+/// counted from the infinite face, one flood per level as in CGAL's mark_domain_in_
+/// triangulation), less the constraint-bounded regions that contain a hole point.
+/// Complexity O(faces + holes * locate).
+inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
+  for (auto f = tr.all_faces_begin(); f != tr.all_faces_end(); ++f) {
+    f->info() = -1;
+    f->set_in_domain(false);
+  }
+  std::vector<face_handle> stack;
+  std::vector<cdt::Edge> border;
+  const auto flood = [&](face_handle start, int level) {
+    start->info() = level;
+    stack.push_back(start);
+    while (!stack.empty()) {
+      const face_handle f = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const face_handle n = f->neighbor(i);
+        if (n->info() != -1) continue;
+        if (f->is_constrained(i)) {
+          border.emplace_back(f, i);
+        } else {
+          n->info() = level;
+          stack.push_back(n);
+        }
+      }
+    }
+  };
+  flood(tr.infinite_face(), 0);
+  for (std::size_t k = 0; k < border.size(); ++k) {
+    const auto [f, i] = border[k];
+    const face_handle n = f->neighbor(i);
+    if (n->info() == -1) flood(n, f->info() + 1);
+  }
+  for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+    f->set_in_domain(f->info() % 2 == 1);
+  for (const point& h : holes) {
+    const face_handle f = tr.locate(cgal_point(h.x, h.y));
+    if (f == face_handle() || tr.is_infinite(f) || !f->is_in_domain()) continue;
+    f->set_in_domain(false);
+    stack.push_back(f);
+    while (!stack.empty()) {
+      const face_handle g = stack.back();
+      stack.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const face_handle n = g->neighbor(i);
+        if (!g->is_constrained(i) && n->is_in_domain()) {
+          n->set_in_domain(false);
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+}
+
+/// Inserts the vertices (spatially sorted, with their input index) and the segments.
+/// \throws meshing_error for non-finite coordinates, duplicate vertices, bad segment indices,
+/// degenerate segments, crossing segments or a vertex inside a segment.
+/// \returns the vertex handle of every input vertex.
+inline std::vector<vertex_handle> build_cdt(cdt& tr, const pslg& d) {
+  const std::size_t n = d.vertices.size();
+  if (n >= none) throw meshing_error(-1, "too many vertices");
+  std::vector<cgal_point> pts;
+  pts.reserve(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const point& p = d.vertices[i];
+    if (!std::isfinite(p.x) || !std::isfinite(p.y))
+      throw meshing_error(-1, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    pts.emplace_back(p.x, p.y);
+  }
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  using map = CGAL::Pointer_property_map<cgal_point>::type;
+  CGAL::spatial_sort(
+      order.begin(), order.end(),
+      CGAL::Spatial_sort_traits_adapter_2<kernel, map>(CGAL::make_property_map(pts)));
+  std::vector<vertex_handle> vh(n);
+  face_handle hint;
+  for (const std::size_t i : order) {
+    const vertex_handle v = tr.insert(pts[i], hint);
+    if (v->info().id != none)
+      throw meshing_error(-1, "vertices " + std::to_string(v->info().id) + " and " +
+                                  std::to_string(i) + " coincide");
+    v->info().id = static_cast<index_t>(i);
+    vh[i] = v;
+    hint = v->face();
+  }
+  for (std::size_t s = 0; s < d.segments.size(); ++s) {
+    const segment& sg = d.segments[s];
+    const std::string name = "segment " + std::to_string(s);
+    if (sg.a >= n || sg.b >= n) throw meshing_error(-1, name + " has a bad vertex index");
+    if (sg.a == sg.b) throw meshing_error(-1, name + " has coinciding endpoints");
+    face_handle f;
+    int i = 0;
+    if (tr.is_edge(vh[sg.a], vh[sg.b], f, i) && f->is_constrained(i)) continue; // repeated
+    try {
+      tr.insert_constraint(vh[sg.a], vh[sg.b]);
+    } catch (const cdt::Intersection_of_constraints_exception&) {
+      throw meshing_error(-1, name + " intersects another segment");
+    }
+  }
+  for (std::size_t s = 0; s < d.segments.size(); ++s) {
+    const segment& sg = d.segments[s];
+    if (!tr.is_edge(vh[sg.a], vh[sg.b]))
+      throw meshing_error(-1, "segment " + std::to_string(s) + " contains an input vertex");
+  }
+  return vh;
+}
+
+/// CGAL's Delaunay_mesher_2 assembled from its levels, with domain_edges_base as the edge
+/// level, started on a triangulation whose in_domain marks are already set.
+template <class Criteria>
+void refine(cdt& tr, Criteria& criteria) {
+  using edges_level =
+      CGAL::Mesh_2::Refine_edges_with_clusters<cdt, domain_gabriel<cdt>, domain_edges_base<cdt>>;
+  using faces_level = CGAL::Mesh_2::Refine_faces<cdt, Criteria, edges_level>;
+  CGAL::Null_mesher_level null_level;
+  CGAL::Null_mesh_visitor null_visitor;
+  CGAL::Mesh_2::Clusters<cdt> clusters(tr);
+  edges_level edges(tr, clusters, null_level);
+  faces_level faces(tr, criteria, edges);
+  CGAL::Mesh_2::Refine_edges_visitor_from_faces<faces_level> visitor(faces, edges, null_visitor);
+  clusters.create_clusters();
+  edges.scan_triangulation();
+  faces.scan_triangulation();
+  faces.refine(visitor);
+}
+
+/// Finds the index of the input segment with endpoints {a, b} (sorted table lookup).
+class segment_table {
+public:
+  explicit segment_table(const pslg& d) {
+    keys_.reserve(d.segments.size());
+    for (std::size_t s = 0; s < d.segments.size(); ++s) {
+      const auto& sg = d.segments[s];
+      keys_.push_back({key(sg.a, sg.b), static_cast<index_t>(s)});
+    }
+    std::stable_sort(keys_.begin(), keys_.end(),
+                     [](const auto& x, const auto& y) { return x.first < y.first; });
+  }
+  /// The first segment with endpoints {a, b}; `none` if there is none.
+  index_t find(index_t a, index_t b) const {
+    const std::uint64_t k = key(a, b);
+    const auto it = std::lower_bound(keys_.begin(), keys_.end(), k,
+                                     [](const auto& x, std::uint64_t v) { return x.first < v; });
+    return it != keys_.end() && it->first == k ? it->second : none;
+  }
+
+private:
+  static std::uint64_t key(index_t a, index_t b) {
+    const auto lo = static_cast<std::uint64_t>(std::min(a, b));
+    const auto hi = static_cast<std::uint64_t>(std::max(a, b));
+    return lo << 32 | hi;
+  }
+  std::vector<std::pair<std::uint64_t, index_t>> keys_;
+};
+
+} // namespace pdd::detail::cgal_mesh

@@ -1,0 +1,77 @@
+/// \file quality.hpp
+/// Triangle measures shared by the meshing criteria, the statistics and the verifier, so that
+/// all three compute the same floating-point values from the same coordinates.
+#pragma once
+
+#include <pdd/geometry/point.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+
+namespace pdd::detail {
+
+/// Twice the signed area of (a, b, c): positive when counter-clockwise (rounded, not exact).
+inline double twice_signed_area(const point& a, const point& b, const point& c) noexcept {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+/// Area of the triangle (a, b, c) (absolute value).
+inline double triangle_area(const point& a, const point& b, const point& c) noexcept {
+  return 0.5 * std::abs(twice_signed_area(a, b, c));
+}
+
+/// Centroid of the triangle (a, b, c); the point where sizing fields are sampled.
+inline point triangle_centroid(const point& a, const point& b, const point& c) noexcept {
+  return {(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+}
+
+inline double squared_distance(const point& a, const point& b) noexcept {
+  const double dx = b.x - a.x;
+  const double dy = b.y - a.y;
+  return dx * dx + dy * dy;
+}
+
+/// sin^2 of the smallest angle of (a, b, c), CGAL's shape measure: (2 area)^2 over the
+/// product of the two longest squared edge lengths (the smallest angle lies between them).
+inline double squared_sine_min_angle(const point& a, const point& b, const point& c) noexcept {
+  const double la = squared_distance(b, c);
+  const double lb = squared_distance(c, a);
+  const double lc = squared_distance(a, b);
+  const double shortest = std::min({la, lb, lc});
+  const double two_area = twice_signed_area(a, b, c);
+  // la * lb * lc / shortest would round differently; pick the two longest explicitly.
+  double p = 0.0;
+  if (shortest == la)
+    p = lb * lc;
+  else if (shortest == lb)
+    p = la * lc;
+  else
+    p = la * lb;
+  return two_area * two_area / p;
+}
+
+/// The three angles of (a, b, c) in degrees, at a, b and c (atan2 of cross and dot products,
+/// accurate for small and large angles alike).
+inline std::array<double, 3> triangle_angles_deg(const point& a, const point& b,
+                                                 const point& c) noexcept {
+  const auto angle_at = [](const point& o, const point& p, const point& q) {
+    const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
+    return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 / std::numbers::pi;
+  };
+  return {angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)};
+}
+
+/// Circumradius over shortest edge of (a, b, c) (infinity for a degenerate triangle).
+inline double radius_edge_ratio(const point& a, const point& b, const point& c) noexcept {
+  const double la = squared_distance(b, c);
+  const double lb = squared_distance(c, a);
+  const double lc = squared_distance(a, b);
+  const double two_area = std::abs(twice_signed_area(a, b, c));
+  // R = la lb lc / (4 area) (lengths, not squares) = sqrt(la lb lc) / (2 * two_area).
+  const double r = std::sqrt(la) * std::sqrt(lb) * std::sqrt(lc) / (2.0 * two_area);
+  return r / std::sqrt(std::min({la, lb, lc}));
+}
+
+} // namespace pdd::detail

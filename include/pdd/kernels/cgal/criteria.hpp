@@ -1,0 +1,92 @@
+/// \file criteria.hpp
+/// pdd::cgal::sizing_criteria: a criteria class for CGAL's Mesh_2 refinement levels that
+/// combines CGAL's shape test with an area bound from any SizingField.
+#pragma once
+
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/detail/quality.hpp>
+
+#include <CGAL/Mesh_2/Face_badness.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace pdd::cgal {
+
+/// Badness of a face: sin^2 of its smallest angle and its area over its area bound.
+/// Ordering (`q1 < q2`: q1 is refined first) follows CGAL's Delaunay_mesh_size_criteria_2:
+/// faces over their area bound first, largest excess first; then the smallest angle first.
+struct face_quality {
+  double sine = 1.0; ///< sin^2 of the smallest angle
+  double size = 0.0; ///< area / area bound (0 when unbounded)
+  bool operator<(const face_quality& q) const noexcept {
+    if (size > 1.0) return q.size > 1.0 ? size > q.size : true;
+    if (q.size > 1.0) return false;
+    return sine < q.sine;
+  }
+};
+
+/// Mesh_2 criteria (the interface of CGAL's Delaunay_mesh_criteria_2: `Quality`, `Is_bad`,
+/// `is_bad_object()`). A face is bad when sin^2 of its smallest angle is below
+/// `shape_bound` (B = sin^2(theta_min), 0.125 for 20.7 deg: the same shape measure as
+/// CGAL's Delaunay_mesh_criteria_2, not the sin^2/4 of Delaunay_mesh_area_criteria_2), and
+/// imperatively bad when its area exceeds min(max_area, sizing.area_at(centroid))
+/// (dissertation eq. 1.1: the area bound of the sizing function).
+/// \tparam Tr a CGAL triangulation whose points have x() and y().
+/// \tparam S a SizingField; the criteria keep a pointer to it: it must outlive the meshing.
+/// Thread-safety: const use from one mesher; many instances may run concurrently.
+template <class Tr, SizingField S>
+class sizing_criteria {
+public:
+  using Face_handle = typename Tr::Face_handle;
+  using Quality = face_quality;
+
+  sizing_criteria(double shape_bound, double max_area, const S& sizing)
+      : shape_bound_(shape_bound), max_area_(max_area), sizing_(&sizing) {}
+
+  double shape_bound() const noexcept { return shape_bound_; }
+  double max_area() const noexcept { return max_area_; }
+
+  /// The area bound at a point: min(max_area, sizing.area_at(p)).
+  double area_bound(const point& p) const {
+    return std::min(max_area_, static_cast<double>(sizing_->area_at(p)));
+  }
+
+  /// CGAL's functor: classifies a face and fills its quality.
+  class Is_bad {
+  public:
+    explicit Is_bad(const sizing_criteria& c) : c_(&c) {}
+
+    CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
+      if (q.size > 1.0) return CGAL::Mesh_2::IMPERATIVELY_BAD;
+      if (q.sine < c_->shape_bound_) return CGAL::Mesh_2::BAD;
+      return CGAL::Mesh_2::NOT_BAD;
+    }
+
+    CGAL::Mesh_2::Face_badness operator()(const Face_handle& fh, Quality& q) const {
+      const point a = to_point(fh->vertex(0)->point());
+      const point b = to_point(fh->vertex(1)->point());
+      const point c = to_point(fh->vertex(2)->point());
+      const double bound = c_->area_bound(detail::triangle_centroid(a, b, c));
+      q.size = std::isinf(bound) ? 0.0 : detail::triangle_area(a, b, c) / bound;
+      q.sine = detail::squared_sine_min_angle(a, b, c);
+      return (*this)(q);
+    }
+
+  private:
+    template <class P>
+    static point to_point(const P& p) {
+      return {p.x(), p.y()};
+    }
+    const sizing_criteria* c_;
+  };
+
+  Is_bad is_bad_object() const { return Is_bad(*this); }
+
+private:
+  double shape_bound_;
+  double max_area_;
+  const S* sizing_;
+};
+
+} // namespace pdd::cgal

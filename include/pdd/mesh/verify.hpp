@@ -1,0 +1,271 @@
+/// \file verify.hpp
+/// pdd::verify: checks a triangle mesh of a PSLG's domain against the correctness invariants
+/// (Delaunay, orientation, conformity to the input segments, coverage of the domain area,
+/// quality and size bounds) and reports every violation.
+#pragma once
+
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/detail/quality.hpp>
+#include <pdd/detail/verify.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/mesh/criteria.hpp>
+#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/sizing/uniform.hpp>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace pdd {
+
+/// Options of verify().
+struct verify_options {
+  /// Quality bound (min_angle_deg, checked with 1e-9 degrees slack) and uniform area bound.
+  mesh_criteria criteria;
+  /// Relative tolerance of |mesh area - domain area| / domain area.
+  double area_tolerance = 1e-9;
+  /// How many violations are described in messages (all are counted).
+  std::size_t max_reported = 20;
+};
+
+/// What verify() found. Counts are exact; messages describe the first max_reported
+/// violations (ids and coordinates) in a fixed order: triangles by index, then vertices, then
+/// edges by their endpoints, then segments by index.
+struct verification_report {
+  std::size_t delaunay_violations = 0;    ///< interior edges that are not locally Delaunay
+  std::size_t orientation_violations = 0; ///< clockwise, degenerate or malformed triangles
+  std::size_t missing_segments = 0;       ///< input segments that are no union of mesh edges
+  std::size_t duplicate_vertices = 0;     ///< vertices at the coordinates of an earlier one
+  std::size_t quality_violations = 0;     ///< triangles with an angle below the bound
+  std::size_t area_violations = 0;        ///< triangles larger than the area bound
+  /// Edges in more than two triangles, interior edges used twice in the same direction, and
+  /// boundary edges (in one triangle) that lie on no input segment.
+  std::size_t nonmanifold_edges = 0;
+  double area_domain = 0.0; ///< pdd::domain_area of the PSLG
+  double area_mesh = 0.0;   ///< sum of the triangle areas
+  bool area_ok = false;     ///< areas agree within the relative tolerance
+  std::vector<std::string> messages;
+
+  /// True if no violation was found and the areas agree.
+  bool ok() const noexcept {
+    return delaunay_violations == 0 && orientation_violations == 0 && missing_segments == 0 &&
+           duplicate_vertices == 0 && quality_violations == 0 && area_violations == 0 &&
+           nonmanifold_edges == 0 && area_ok;
+  }
+};
+
+namespace detail {
+
+/// Per-triangle checks (bit flags), computed in parallel.
+enum triangle_flag : std::uint8_t {
+  tri_malformed = 1,
+  tri_orientation = 2,
+  tri_quality = 4,
+  tri_area = 8
+};
+
+template <class AreaBound>
+verification_report verify_impl_run(const triangle_mesh& m, const pslg& d, const verify_options& o,
+                                    const AreaBound& bound_at) {
+  namespace vi = verify_impl;
+  using vi::str;
+  verification_report r;
+  const auto report = [&](std::size_t& counter, const std::function<std::string()>& what) {
+    ++counter;
+    if (r.messages.size() < o.max_reported) r.messages.push_back(what());
+  };
+  const std::size_t nv = m.vertices.size();
+  const std::size_t nt = m.triangles.size();
+
+  // Triangles: orientation (exact), angles and area against the bounds.
+  std::vector<char> valid(nt, 0);
+  std::vector<std::uint8_t> flags(nt, 0);
+  const double min_angle = o.criteria.min_angle_deg - 1e-9;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 1024), [&](const auto& range) {
+    for (std::size_t t = range.begin(); t != range.end(); ++t) {
+      const auto& tri = m.triangles[t];
+      if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv || tri[0] == tri[1] || tri[1] == tri[2] ||
+          tri[0] == tri[2]) {
+        flags[t] = tri_malformed;
+        continue;
+      }
+      valid[t] = 1;
+      const point& a = m.vertices[tri[0]];
+      const point& b = m.vertices[tri[1]];
+      const point& c = m.vertices[tri[2]];
+      std::uint8_t f = 0;
+      if (CGAL::orientation(vi::to_cgal(a), vi::to_cgal(b), vi::to_cgal(c)) != CGAL::LEFT_TURN)
+        f |= tri_orientation;
+      const auto angles = triangle_angles_deg(a, b, c);
+      if (std::min({angles[0], angles[1], angles[2]}) < min_angle) f |= tri_quality;
+      const double bound = std::min(o.criteria.max_area, bound_at(triangle_centroid(a, b, c)));
+      if (triangle_area(a, b, c) > bound * (1.0 + 1e-12)) f |= tri_area;
+      flags[t] = f;
+    }
+  });
+  for (std::size_t t = 0; t < nt; ++t) {
+    if (flags[t] == 0) continue;
+    const auto& tri = m.triangles[t];
+    const auto name = [&] {
+      std::string s = "triangle " + std::to_string(t) + " (" + std::to_string(tri[0]) + ", " +
+                      std::to_string(tri[1]) + ", " + std::to_string(tri[2]) + ")";
+      if (flags[t] & tri_malformed) return s;
+      return s + " at " + str(m.vertices[tri[0]]) + " " + str(m.vertices[tri[1]]) + " " +
+             str(m.vertices[tri[2]]);
+    };
+    if (flags[t] & tri_malformed)
+      report(r.orientation_violations, [&] { return name() + ": bad vertex indices"; });
+    if (flags[t] & tri_orientation)
+      report(r.orientation_violations, [&] { return name() + ": clockwise or degenerate"; });
+    if (flags[t] & tri_quality) {
+      report(r.quality_violations, [&] {
+        const auto& v = m.vertices;
+        const auto ang = triangle_angles_deg(v[tri[0]], v[tri[1]], v[tri[2]]);
+        return name() + ": smallest angle " + std::to_string(std::min({ang[0], ang[1], ang[2]})) +
+               " deg";
+      });
+    }
+    if (flags[t] & tri_area)
+      report(r.area_violations, [&] { return name() + ": area above the bound"; });
+  }
+
+  // Duplicate vertices (hashing the coordinates; the first vertex at a place wins).
+  vi::vertex_lookup lookup;
+  lookup.reserve(nv);
+  for (std::size_t v = 0; v < nv; ++v) {
+    const auto [it, inserted] = lookup.emplace(m.vertices[v], static_cast<index_t>(v));
+    if (!inserted)
+      report(r.duplicate_vertices, [&] {
+        return "vertex " + std::to_string(v) + " duplicates vertex " + std::to_string(it->second) +
+               " at " + str(m.vertices[v]);
+      });
+  }
+
+  // Edges: conformity and the Delaunay property of interior edges.
+  vi::edge_table table(m, valid);
+  auto& edges = table.edges();
+  std::vector<std::uint8_t> edge_flags(edges.size(), 0); // 1 nonmanifold, 2 not Delaunay
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 1024), [&](const auto& rg) {
+    for (std::size_t k = rg.begin(); k != rg.end(); ++k) {
+      const vi::edge_record& e = edges[k];
+      if (e.count > 2 || (e.count == 2 && e.forward[0] == e.forward[1])) {
+        edge_flags[k] = 1;
+        continue;
+      }
+      if (e.count != 2) continue;
+      const auto apex = [&](index_t t) {
+        const auto& tri = m.triangles[t];
+        return tri[0] != e.a && tri[0] != e.b   ? tri[0]
+               : tri[1] != e.a && tri[1] != e.b ? tri[1]
+                                                : tri[2];
+      };
+      const auto p = vi::to_cgal(m.vertices[e.a]), q = vi::to_cgal(m.vertices[e.b]);
+      const auto s0 = vi::to_cgal(m.vertices[apex(e.tri[0])]);
+      const auto s1 = vi::to_cgal(m.vertices[apex(e.tri[1])]);
+      if (CGAL::orientation(p, q, s0) == CGAL::COLLINEAR) continue; // reported as degenerate
+      if (CGAL::side_of_bounded_circle(p, q, s0, s1) == CGAL::ON_BOUNDED_SIDE) edge_flags[k] = 2;
+    }
+  });
+
+  // Input segments: chains of mesh edges between the mesh vertices at their endpoints.
+  std::vector<index_t> path;
+  for (std::size_t s = 0; s < d.segments.size(); ++s) {
+    const segment& sg = d.segments[s];
+    const auto find = [&](index_t v) {
+      if (v >= d.vertices.size()) return vi::none;
+      const auto it = lookup.find(d.vertices[v]);
+      return it == lookup.end() ? vi::none : it->second;
+    };
+    const index_t ma = find(sg.a), mb = find(sg.b);
+    if (ma == vi::none || mb == vi::none || ma == mb || !vi::walk_segment(table, m, ma, mb, path))
+      report(r.missing_segments, [&] {
+        std::string msg = "segment " + std::to_string(s) + " (" + std::to_string(sg.a) + ", " +
+                          std::to_string(sg.b) + ")";
+        if (sg.a < d.vertices.size() && sg.b < d.vertices.size())
+          msg += " from " + str(d.vertices[sg.a]) + " to " + str(d.vertices[sg.b]);
+        return msg + ": not a union of mesh edges";
+      });
+  }
+
+  for (std::size_t k = 0; k < edges.size(); ++k) {
+    const vi::edge_record& e = edges[k];
+    const auto name = [&] {
+      return "edge (" + std::to_string(e.a) + ", " + std::to_string(e.b) + ") from " +
+             str(m.vertices[e.a]) + " to " + str(m.vertices[e.b]);
+    };
+    if (edge_flags[k] == 1)
+      report(r.nonmanifold_edges, [&] {
+        return name() + ": in " + std::to_string(e.count) + " triangles" +
+               (e.count == 2 ? " with the same direction" : "");
+      });
+    else if (e.count == 1 && !e.on_segment)
+      report(r.nonmanifold_edges, [&] { return name() + ": boundary edge on no input segment"; });
+    if (edge_flags[k] == 2)
+      report(r.delaunay_violations, [&] {
+        return name() + ": not locally Delaunay (triangles " + std::to_string(e.tri[0]) + ", " +
+               std::to_string(e.tri[1]) + ")";
+      });
+  }
+
+  // Areas: deterministic reduction of the triangle areas.
+  r.area_mesh = tbb::parallel_deterministic_reduce(
+      tbb::blocked_range<std::size_t>(0, nt, 4096), 0.0,
+      [&](const auto& rg, double acc) {
+        for (std::size_t t = rg.begin(); t != rg.end(); ++t)
+          if (valid[t]) {
+            const auto& tri = m.triangles[t];
+            acc += triangle_area(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
+          }
+        return acc;
+      },
+      std::plus<double>());
+  r.area_domain = domain_area(d);
+  r.area_ok = std::abs(r.area_mesh - r.area_domain) <= o.area_tolerance * std::abs(r.area_domain);
+  if (!r.area_ok && r.messages.size() < o.max_reported)
+    r.messages.push_back("mesh area " + std::to_string(r.area_mesh) + " differs from domain area " +
+                         std::to_string(r.area_domain));
+  return r;
+}
+
+} // namespace detail
+
+/// Verifies a mesh of the domain of d (dissertation sec. 1.1 requirements, DESIGN.md
+/// "Correctness invariants"): every interior edge is locally Delaunay (exact
+/// side_of_bounded_circle: the opposite apex is not strictly inside the circumcircle); every
+/// triangle is counter-clockwise and non-degenerate (exact orientation); no two vertices
+/// coincide; every input segment is a union of mesh edges (a chain from the mesh vertex at
+/// one endpoint to the one at the other through vertices on the segment, see
+/// detail::verify_impl::on_segment_line); every edge lies in at most two triangles, interior
+/// edges in opposite directions, and boundary edges lie on input segments; the triangle areas
+/// sum to pdd::domain_area(d) within o.area_tolerance; every triangle has its smallest angle
+/// >= o.criteria.min_angle_deg - 1e-9 deg and its area <= min(o.criteria.max_area,
+/// sizing.area_at(centroid)) * (1 + 1e-12).
+/// Input vertices are found in the mesh by their coordinates, so any vertex numbering works.
+/// \tparam S a SizingField.
+/// \throws geometry_error as pdd::domain_area(d) (d must consist of closed loops).
+/// Complexity O(n) expected (hashing, bucket sort of edges, segment walks over incident
+/// edges); the triangle and edge checks run in parallel (TBB). The report is the same for any
+/// number of threads. Thread-safe.
+template <SizingField S>
+verification_report verify(const triangle_mesh& m, const pslg& d, const verify_options& o,
+                           const S& sizing) {
+  return detail::verify_impl_run(
+      m, d, o, [&](const point& p) { return static_cast<double>(sizing.area_at(p)); });
+}
+
+/// Verifies a mesh against the criteria alone (area bound o.criteria.max_area). \see verify
+inline verification_report verify(const triangle_mesh& m, const pslg& d,
+                                  const verify_options& o = {}) {
+  return verify(m, d, o, uniform_sizing{});
+}
+
+} // namespace pdd
