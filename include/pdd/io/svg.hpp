@@ -1,0 +1,246 @@
+/// \file svg.hpp
+/// pdd::write_svg: SVG pictures of a PSLG, a triangle mesh (optionally with its PSLG on top)
+/// and a MADD decomposition, for inspection in a browser.
+#pragma once
+
+#include <pdd/detail/io_svg.hpp>
+#include <pdd/detail/io_text.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/io/atomic_file.hpp>
+#include <pdd/io/svg_options.hpp>
+#include <pdd/madd/decomposition.hpp>
+#include <pdd/mesh/triangle_mesh.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd {
+
+namespace detail {
+
+inline void check_svg_pslg(const pslg& g, const std::filesystem::path& path) {
+  for (std::size_t i = 0; i < g.segments.size(); ++i)
+    if (g.segments[i].a >= g.vertices.size() || g.segments[i].b >= g.vertices.size())
+      throw error("cannot write '" + path.string() + "': segment " + std::to_string(i) +
+                  " refers to a missing vertex");
+}
+
+inline bbox pslg_box(const pslg& g) {
+  bbox b;
+  for (const point& p : g.vertices)
+    b.add(p);
+  for (const point& p : g.holes)
+    b.add(p);
+  for (const region& r : g.regions)
+    b.add(r.p);
+  return b;
+}
+
+/// Draws g's segments (coloured by marker), vertices, hole crosses and region points.
+inline void draw_pslg(svg_canvas& c, const pslg& g, const svg_options& o) {
+  segments_by_marker segs;
+  for (const segment& s : g.segments)
+    segs[s.marker].emplace_back(g.vertices[s.a], g.vertices[s.b]);
+  draw_marked_segments(c, segs, o.segment_stroke_px);
+  c.dots(g.vertices, "#000000", o.vertex_radius_px);
+  c.crosses(g.holes, "#ff0000");
+  std::vector<point> regions;
+  for (const region& r : g.regions)
+    regions.push_back(r.p);
+  c.dots(regions, "#1f77b4", 2.0 * o.vertex_radius_px);
+}
+
+/// Draws the mesh: triangles filled by marker when there are several markers, every edge once
+/// (thin), then the boundary segments by marker; above max_triangles only the segments.
+inline void draw_mesh(svg_canvas& c, const triangle_mesh& m, const svg_options& o) {
+  if (m.triangles.size() > o.max_triangles) {
+    c.comment("the mesh has " + std::to_string(m.triangles.size()) +
+              " triangles, more than max_triangles = " + std::to_string(o.max_triangles) +
+              ": only its boundary segments are drawn");
+  } else {
+    std::map<int, std::vector<std::size_t>> by_marker;
+    for (std::size_t t = 0; t < m.triangles.size(); ++t)
+      by_marker[m.triangle_markers.empty() ? 0 : m.triangle_markers[t]].push_back(t);
+    if (by_marker.size() > 1) {
+      std::size_t k = 0;
+      for (const auto& [marker, tris] : by_marker) {
+        c.begin_path("fill=\"" + fill_colour(k++) + "\" stroke=\"none\"");
+        for (const std::size_t t : tris) {
+          c.move_to(m.vertices[m.triangles[t][0]]);
+          c.line_to(m.vertices[m.triangles[t][1]]);
+          c.line_to(m.vertices[m.triangles[t][2]]);
+        }
+        c.end_path();
+      }
+    }
+    std::vector<std::uint64_t> edges;
+    edges.reserve(3 * m.triangles.size());
+    for (const auto& t : m.triangles)
+      for (int i = 0; i < 3; ++i) {
+        const std::uint64_t a = t[i], b = t[(i + 1) % 3];
+        edges.push_back(a < b ? (a << 32 | b) : (b << 32 | a));
+      }
+    std::sort(edges.begin(), edges.end());
+    edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+    if (!edges.empty()) {
+      c.begin_path(svg_canvas::stroke_style("#555555", o.mesh_stroke_px));
+      for (const std::uint64_t e : edges) {
+        c.move_to(m.vertices[e >> 32]);
+        c.line_to(m.vertices[e & 0xffffffffu]);
+      }
+      c.end_path();
+    }
+  }
+  segments_by_marker segs;
+  for (const mesh_edge& e : m.segments)
+    segs[e.marker].emplace_back(m.vertices[e.a], m.vertices[e.b]);
+  draw_marked_segments(c, segs, o.segment_stroke_px);
+}
+
+inline void check_decomposition(const decomposition& d, const std::filesystem::path& path) {
+  const std::string where = "cannot write '" + path.string() + "': ";
+  for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
+    const subdomain& sd = d.subdomains[s];
+    if (sd.tags.size() != sd.loops.size())
+      throw error(where + "subdomain " + std::to_string(s) +
+                  " has loops and tags of different "
+                  "counts");
+    for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+      if (sd.tags[l].size() != sd.loops[l].size())
+        throw error(where + "subdomain " + std::to_string(s) + " loop " + std::to_string(l) +
+                    " has " + std::to_string(sd.loops[l].size()) + " vertices but " +
+                    std::to_string(sd.tags[l].size()) + " edge tags");
+      for (const index_t v : sd.loops[l])
+        if (v >= d.vertices.size())
+          throw error(where + "subdomain " + std::to_string(s) + " refers to missing vertex " +
+                      std::to_string(v));
+    }
+  }
+}
+
+} // namespace detail
+
+/// Writes an SVG picture of a PSLG, atomically: y axis up (flipped to SVG's down), scaled to
+/// options.width_px; segments coloured by marker, vertices as dots, holes as red crosses,
+/// region points as blue dots.
+/// \throws pdd::error naming the path for a segment with a missing vertex or a failed write.
+/// Complexity: O(n log n). Thread-safety: reentrant.
+inline void write_svg(const std::filesystem::path& path, const pslg& g,
+                      const svg_options& options = {}) {
+  detail::check_svg_pslg(g, path);
+  write_file_atomically(path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    detail::svg_canvas c(out, detail::pslg_box(g), options);
+    c.open("pdd PSLG: " + std::to_string(g.vertices.size()) + " vertices, " +
+           std::to_string(g.segments.size()) + " segments, " + std::to_string(g.holes.size()) +
+           " holes");
+    detail::draw_pslg(c, g, options);
+    c.close();
+    out.flush();
+  });
+}
+
+/// Writes an SVG picture of a mesh, atomically: triangles filled by marker (subdomain) when
+/// there are several, mesh edges thin, boundary segments coloured by marker. A mesh with more
+/// than options.max_triangles triangles is drawn as its boundary segments only, and an SVG
+/// comment says so (the full picture would be enormous).
+/// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
+/// Complexity: O(t log t). Thread-safety: reentrant.
+inline void write_svg(const std::filesystem::path& path, const triangle_mesh& mesh,
+                      const svg_options& options = {}) {
+  detail::check_mesh_for_writing(mesh, path);
+  write_file_atomically(path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    detail::bbox box;
+    for (const point& p : mesh.vertices)
+      box.add(p);
+    detail::svg_canvas c(out, box, options);
+    c.open("pdd mesh: " + std::to_string(mesh.vertices.size()) + " vertices, " +
+           std::to_string(mesh.triangles.size()) + " triangles");
+    detail::draw_mesh(c, mesh, options);
+    c.close();
+    out.flush();
+  });
+}
+
+/// Writes an SVG picture of a mesh with its PSLG drawn on top (segments, holes, regions).
+/// \throws pdd::error as the other overloads.
+inline void write_svg(const std::filesystem::path& path, const triangle_mesh& mesh,
+                      const pslg& overlay, const svg_options& options = {}) {
+  detail::check_mesh_for_writing(mesh, path);
+  detail::check_svg_pslg(overlay, path);
+  write_file_atomically(path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    detail::bbox box = detail::pslg_box(overlay);
+    for (const point& p : mesh.vertices)
+      box.add(p);
+    detail::svg_canvas c(out, box, options);
+    c.open("pdd mesh: " + std::to_string(mesh.vertices.size()) + " vertices, " +
+           std::to_string(mesh.triangles.size()) + " triangles, with its PSLG");
+    detail::draw_mesh(c, mesh, options);
+    svg_options thin = options;
+    thin.vertex_radius_px = 0.0;
+    detail::draw_pslg(c, overlay, thin);
+    c.close();
+    out.flush();
+  });
+}
+
+/// Writes an SVG picture of a decomposition (dissertation ch. 3-4), atomically: each subdomain
+/// filled with its own colour (holes left empty, even-odd rule), external edges coloured by
+/// their boundary marker and interface edges in black, each interface edge drawn once.
+/// \throws pdd::error naming the path when a loop refers to a missing vertex or its tags do
+///   not match it, or when writing fails.
+/// Complexity: linear in the loop sizes. Thread-safety: reentrant.
+inline void write_svg(const std::filesystem::path& path, const decomposition& d,
+                      const svg_options& options = {}) {
+  detail::check_decomposition(d, path);
+  write_file_atomically(path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    detail::bbox box;
+    for (const point& p : d.vertices)
+      box.add(p);
+    detail::svg_canvas c(out, box, options);
+    c.open("pdd decomposition: " + std::to_string(d.subdomains.size()) + " subdomains, " +
+           std::to_string(d.interfaces.size()) + " interfaces");
+    for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
+      c.begin_path("fill=\"" + detail::fill_colour(s) + "\" fill-rule=\"evenodd\" stroke=\"none\"");
+      for (const auto& loop : d.subdomains[s].loops) {
+        if (loop.size() < 3) continue;
+        c.move_to(d.vertices[loop[0]]);
+        for (std::size_t i = 1; i < loop.size(); ++i)
+          c.line_to(d.vertices[loop[i]]);
+        out.put('Z');
+      }
+      c.end_path();
+    }
+    detail::segments_by_marker external;
+    std::vector<std::pair<point, point>> interfaces;
+    for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
+      const subdomain& sd = d.subdomains[s];
+      for (std::size_t l = 0; l < sd.loops.size(); ++l)
+        for (std::size_t i = 0; i < sd.loops[l].size(); ++i) {
+          const edge_tag& t = sd.tags[l][i];
+          const point a = d.vertices[sd.loops[l][i]];
+          const point b = d.vertices[sd.loops[l][(i + 1) % sd.loops[l].size()]];
+          if (t.type == edge_tag::kind::external)
+            external[t.marker].emplace_back(a, b);
+          else if (t.neighbour == no_index || s < t.neighbour)
+            interfaces.emplace_back(a, b);
+        }
+    }
+    detail::draw_marked_segments(c, external, options.segment_stroke_px);
+    c.segments(interfaces, "#000000", options.segment_stroke_px);
+    c.close();
+    out.flush();
+  });
+}
+
+} // namespace pdd
