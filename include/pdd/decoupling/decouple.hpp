@@ -1,0 +1,141 @@
+/// \file decouple.hpp
+/// pdd::decouple: turns a decomposition into a decoupled decomposition by refining its
+/// separators into a decoupling path (dissertation 6.2-6.3, Lemma 9, Theorem 15).
+#pragma once
+
+#include <pdd/concepts/executor.hpp>
+#include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/decoupling/decoupling_parameter.hpp>
+#include <pdd/decoupling/interface_split.hpp>
+#include <pdd/detail/decoupling_build.hpp>
+#include <pdd/detail/decoupling_loops.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/lfs.hpp>
+#include <pdd/madd/decomposition.hpp>
+#include <pdd/mesh/criteria.hpp>
+#include <pdd/parallel/sequential_executor.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd {
+
+/// Options of pdd::decouple.
+struct decoupling_options {
+  /// The criteria the subdomains will be meshed with (the area bound enters k, Theorem 15).
+  mesh_criteria criteria;
+  /// > 0: use this k instead of Theorem 15's (experiments and tests; the decoupling guarantee
+  /// then holds only if it does not exceed the computed k).
+  double k_override = 0.0;
+  /// Multiplies the computed k (values in (0, 1] keep the guarantee).
+  double k_scale = 1.0;
+};
+
+namespace detail {
+
+/// lfs_min of every subdomain's loops (without split points), computed concurrently.
+///
+/// Why the minimum over subdomains serves as lfs_min(D_H) (Definition 1: the minimum distance
+/// between two non-incident entities):
+/// - Every entity (vertex or segment) of a subdomain boundary B_i is an entity of D_H with the
+///   same incidences, so lfs_min(B_i) >= lfs_min(D_H) for every i.
+/// - The proofs use lfs_min one subdomain at a time: Proposition 12 and Theorem 15 apply
+///   Theorem 1 to each B_i with its split points, and Lemma 11's argument (a split point is at
+///   least lfs_min from non-incident entities and sin 60 * 2k/sqrt 3 = k from incident ones)
+///   runs unchanged inside one B_i. So k <= min_i lfs_min(B_i) is all the guarantee needs.
+/// - The two values differ only when the closest non-incident pair of D_H is not visible
+///   inside one subdomain. Across a separator this cannot make the per-subdomain value
+///   smaller than needed: if the segment pq joining the closest points crosses a separator
+///   segment s at r, then s is an entity of both boundaries, and s with p (or with q) is a pair
+///   at most |pr| (|rq|) < |pq| apart unless s is incident to it; the remaining incident
+///   configurations are bounded by the >= 60 deg separator angles as in Lemma 11. What remains
+///   is a pair closest across a hole or the outside of the domain, which the kernel, meshing
+///   each subdomain alone, never sees.
+template <Executor E>
+std::vector<double> subdomain_lfs(const decomposition& d, const E& ex) {
+  const std::size_t m = d.subdomains.size();
+  std::vector<double> lfs(m, std::numeric_limits<double>::infinity());
+  std::vector<double> work(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    std::size_t n = 0;
+    for (const auto& loop : d.subdomains[s].loops) n += loop.size();
+    work[s] = static_cast<double>(n);
+  }
+  std::vector<std::exception_ptr> errors(m);
+  ex.run(work, [&](index_t s) {
+    try {
+      pslg g;
+      std::vector<index_t> unused;
+      build_subdomain_pslg(
+          d, s, g, [](std::size_t, index_t, index_t, pslg&) { return no_index; }, unused,
+          interface_marker);
+      lfs[s] = lfs_min(g);
+    } catch (...) {
+      errors[s] = std::current_exception();
+    }
+  });
+  for (const auto& e : errors)
+    if (e) std::rethrow_exception(e);
+  return lfs;
+}
+
+} // namespace detail
+
+/// Refines the separators of d into a decoupling path: computes
+/// k = min(lfs_min(D_H), L / 4, (1/2) sqrt(A / sqrt 2)) (Theorem 15; Proposition 12 without an
+/// area bound; see decoupling_parameter) with lfs_min taken per subdomain in parallel, and
+/// splits every separator segment into nu equal pieces, 2k/sqrt 3 <= piece < 2k (Lemma 9),
+/// from its canonical orientation. Meshing each subdomain's input() with a Ruppert-type
+/// DelaunayMesher then never splits a piece (Corollary 13), and the union of the subdomain
+/// meshes is a conforming Delaunay mesh (Proposition 7).
+/// \tparam E an Executor (the per-subdomain lfs_min runs on it).
+/// \pre d is a decomposition as MADD makes it: loops over a shared vertex pool, every interface
+/// edge listed by the two subdomains it separates; separators meet the boundary and each other
+/// at >= 60 deg (Phi_0).
+/// \throws pdd::decoupling_error for a malformed decomposition (naming subdomain and loop) or an
+/// unusable k; pdd::geometry_error from lfs_min; pdd::limit_error when a separator segment would
+/// need more than 2^31 pieces.
+/// Complexity: O(size of d + number of split points) plus lfs_min per subdomain.
+/// Thread-safety: reentrant.
+template <Executor E = sequential_executor>
+decoupled_decomposition decouple(decomposition d, const decoupling_options& options,
+                                 const E& executor = {}) {
+  detail::check_decomposition(d);
+  decoupled_decomposition dd;
+  detail::collect_path_edges(d, dd.path, dd.loop_edge_path);
+  dd.shortest_separator = std::numeric_limits<double>::infinity();
+  for (const path_edge& e : dd.path) dd.shortest_separator = std::min(dd.shortest_separator, e.length);
+  const std::vector<double> lfs = detail::subdomain_lfs(d, executor);
+  dd.lfs_min = *std::min_element(lfs.begin(), lfs.end());
+  dd.area_term = decoupling_area_term(options.criteria);
+  dd.k = options.k_override > 0.0
+             ? options.k_override
+             : options.k_scale * decoupling_parameter(dd.lfs_min, dd.shortest_separator,
+                                                      options.criteria);
+  if (!(dd.k > 0.0) || !std::isfinite(dd.k))
+    throw decoupling_error("unusable decoupling parameter k = " + std::to_string(dd.k) +
+                           " (lfs_min " + std::to_string(dd.lfs_min) + ", shortest separator " +
+                           std::to_string(dd.shortest_separator) + ")");
+  dd.parts = std::move(d);
+  std::size_t total = 0;
+  for (path_edge& e : dd.path) {
+    e.k = dd.k;
+    e.pieces = interface_split_count(e.length, dd.k);
+    total += e.pieces - 1;
+  }
+  dd.points.reserve(total);
+  for (path_edge& e : dd.path) {
+    e.first_point = dd.points.size();
+    const point a = dd.parts.vertices[e.u], b = dd.parts.vertices[e.v];
+    for (index_t i = 1; i < e.pieces; ++i)
+      dd.points.push_back(interface_split_point(a, b, i, e.pieces));
+  }
+  return dd;
+}
+
+} // namespace pdd

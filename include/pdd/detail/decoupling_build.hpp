@@ -1,0 +1,110 @@
+/// \file decoupling_build.hpp
+/// Implementation of pdd::decouple: checking the decomposition and collecting its separator
+/// segments (the path edges).
+#pragma once
+
+#include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/madd/decomposition.hpp>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace pdd::detail {
+
+/// Checks the structure of d (ids in range, one tag per loop edge, loops of >= 3 vertices, no
+/// reserved marker on external edges).
+/// \throws pdd::decoupling_error naming the subdomain and loop. Complexity O(size of d).
+inline void check_decomposition(const decomposition& d) {
+  const auto n = d.vertices.size();
+  const auto m = d.subdomains.size();
+  if (m == 0) throw decoupling_error("the decomposition has no subdomains");
+  if (!d.vertex_markers.empty() && d.vertex_markers.size() != n)
+    throw decoupling_error("decomposition: vertex_markers and vertices differ in size");
+  for (std::size_t s = 0; s < m; ++s) {
+    const subdomain& sd = d.subdomains[s];
+    const std::string where = "subdomain " + std::to_string(s);
+    if (sd.loops.empty()) throw decoupling_error(where + " has no loops");
+    if (sd.tags.size() != sd.loops.size())
+      throw decoupling_error(where + ": tags and loops differ in size");
+    for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+      const auto& loop = sd.loops[l];
+      const std::string at = where + " loop " + std::to_string(l);
+      if (loop.size() < 3) throw decoupling_error(at + " has fewer than 3 vertices");
+      if (sd.tags[l].size() != loop.size())
+        throw decoupling_error(at + ": one tag per edge expected");
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        if (loop[i] >= n) throw decoupling_error(at + ": vertex id out of range");
+        const edge_tag& t = sd.tags[l][i];
+        if (t.type == edge_tag::kind::external && t.marker == interface_marker)
+          throw decoupling_error(at + ": input segment " + std::to_string(t.id) +
+                                 " carries the marker reserved for interfaces (INT_MIN)");
+        if (t.type == edge_tag::kind::interface && (t.neighbour >= m || t.neighbour == s))
+          throw decoupling_error(at + " edge " + std::to_string(i) +
+                                 ": interface edge with an invalid neighbour subdomain");
+        if (d.vertices[loop[i]] == d.vertices[loop[(i + 1) % loop.size()]])
+          throw decoupling_error(at + " edge " + std::to_string(i) + " has zero length");
+      }
+    }
+  }
+}
+
+/// Collects the separator segments of d: one path_edge per interface loop edge pair, numbered
+/// in order of first appearance (subdomains, loops and edges in order), and fills
+/// loop_edge_path. Lengths are set; k, pieces and points are not.
+/// \throws pdd::decoupling_error when an interface edge does not appear exactly twice, on the
+/// two subdomains that name each other as neighbours. Complexity O(size of d) expected.
+inline void collect_path_edges(const decomposition& d, std::vector<path_edge>& path,
+                               std::vector<std::vector<index_t>>& loop_edge_path) {
+  std::unordered_map<std::uint64_t, index_t> index;
+  std::vector<std::uint8_t> seen;
+  loop_edge_path.assign(d.subdomains.size(), {});
+  for (index_t s = 0; s < d.subdomains.size(); ++s) {
+    const subdomain& sd = d.subdomains[s];
+    auto& lep = loop_edge_path[s];
+    for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+      const auto& loop = sd.loops[l];
+      for (std::size_t i = 0; i < loop.size(); ++i) {
+        const edge_tag& t = sd.tags[l][i];
+        if (t.type == edge_tag::kind::external) {
+          lep.push_back(no_index);
+          continue;
+        }
+        index_t a = loop[i], b = loop[(i + 1) % loop.size()];
+        const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+        const auto [it, fresh] = index.emplace(key, static_cast<index_t>(path.size()));
+        if (fresh) {
+          if (d.vertices[b] < d.vertices[a]) std::swap(a, b);
+          const point pa = d.vertices[a], pb = d.vertices[b];
+          path_edge e;
+          e.u = a;
+          e.v = b;
+          e.interface_id = t.id;
+          e.sides = {std::min(s, t.neighbour), std::max(s, t.neighbour)};
+          e.length = std::hypot(pb.x - pa.x, pb.y - pa.y);
+          path.push_back(e);
+          seen.push_back(s == e.sides[0] ? 1 : 2);
+        } else {
+          const path_edge& e = path[it->second];
+          const std::uint8_t side = s == e.sides[0] ? 1 : (s == e.sides[1] ? 2 : 4);
+          if (side == 4 || (seen[it->second] & side) || t.neighbour != e.sides[side == 1 ? 1 : 0])
+            throw decoupling_error("interface edge between vertices " + std::to_string(a) +
+                                   " and " + std::to_string(b) + " (subdomain " +
+                                   std::to_string(s) + ") does not match its other side");
+          seen[it->second] |= side;
+        }
+        lep.push_back(it->second);
+      }
+    }
+  }
+  for (std::size_t e = 0; e < path.size(); ++e)
+    if (seen[e] != 3)
+      throw decoupling_error("interface edge between vertices " + std::to_string(path[e].u) +
+                             " and " + std::to_string(path[e].v) + " appears only in subdomain " +
+                             std::to_string(seen[e] == 1 ? path[e].sides[0] : path[e].sides[1]));
+}
+
+} // namespace pdd::detail

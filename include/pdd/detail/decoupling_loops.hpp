@@ -1,0 +1,90 @@
+/// \file decoupling_loops.hpp
+/// Implementation of decoupled_decomposition::input and decouple: a subdomain's loops as a
+/// pslg, and loop areas.
+#pragma once
+
+#include <pdd/decoupling/interface_split.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/madd/decomposition.hpp>
+
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+namespace pdd::detail {
+
+/// Builds subdomain s of d as a pslg into g: first every loop vertex once (in loop order;
+/// a vertex repeated in the loops is added once), then, per loop edge a -> b, the points
+/// `on_interface(edge, a, b, g)` appends (in the order a -> b; it returns the path edge id, or
+/// no_index to add none) and the segments a -> points -> b. External edges carry their tag's
+/// marker, interface edges `interface_mark` (pdd::interface_marker). For every
+/// segment, segment_path_edge receives the id on_interface returned (no_index: external).
+/// Complexity: linear in the output (expected).
+template <class OnInterface>
+void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterface&& on_interface,
+                          std::vector<index_t>& segment_path_edge, int interface_mark) {
+  const subdomain& sd = d.subdomains[s];
+  std::size_t total = 0;
+  for (const auto& loop : sd.loops) total += loop.size();
+  std::unordered_map<index_t, index_t> local;
+  local.reserve(total);
+  g.vertices.reserve(total);
+  g.vertex_markers.reserve(total);
+  g.segments.reserve(total);
+  segment_path_edge.reserve(total);
+  for (const auto& loop : sd.loops)
+    for (const index_t v : loop) {
+      PDD_ASSERT(v < d.vertices.size());
+      if (local.emplace(v, static_cast<index_t>(g.vertices.size())).second)
+        g.add_vertex(d.vertices[v], v < d.vertex_markers.size() ? d.vertex_markers[v] : 0);
+    }
+  std::size_t edge = 0;
+  for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+    const auto& loop = sd.loops[l];
+    for (std::size_t i = 0; i < loop.size(); ++i, ++edge) {
+      const index_t a = loop[i], b = loop[(i + 1) % loop.size()];
+      const edge_tag& tag = sd.tags[l][i];
+      if (tag.type == edge_tag::kind::external) {
+        g.add_segment(local[a], local[b], tag.marker);
+        segment_path_edge.push_back(no_index);
+        continue;
+      }
+      const auto first = static_cast<index_t>(g.vertices.size());
+      const index_t e = on_interface(edge, a, b, g);
+      const auto last = static_cast<index_t>(g.vertices.size());
+      index_t prev = local[a];
+      for (index_t q = first; q < last; ++q) {
+        g.add_segment(prev, q, interface_mark);
+        segment_path_edge.push_back(e);
+        prev = q;
+      }
+      g.add_segment(prev, local[b], interface_mark);
+      segment_path_edge.push_back(e);
+    }
+  }
+}
+
+/// Signed area of one loop of pool vertices (shoelace; positive when counter-clockwise).
+inline double loop_signed_area(const decomposition& d, const std::vector<index_t>& loop) {
+  double twice = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const point p = d.vertices[loop[i]], q = d.vertices[loop[(i + 1) % loop.size()]];
+    twice += p.x * q.y - q.x * p.y;
+  }
+  return 0.5 * twice;
+}
+
+/// Area of subdomain s: its stored area when positive, else outer loop minus holes.
+inline double subdomain_area(const decomposition& d, index_t s) {
+  const subdomain& sd = d.subdomains[s];
+  if (sd.area > 0.0) return sd.area;
+  double a = 0.0;
+  for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+    const double la = std::abs(loop_signed_area(d, sd.loops[l]));
+    a += l == 0 ? la : -la;
+  }
+  return a;
+}
+
+} // namespace pdd::detail

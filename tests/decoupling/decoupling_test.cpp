@@ -1,0 +1,309 @@
+// Tests of the decoupling path (dissertation 6.2-6.3): Lemma 9, the canonical split points,
+// the parameter k (Proposition 12, Theorem 15), decouple() on hand-made decompositions, and
+// the executors.
+#include "hand_decompositions.hpp"
+
+#include <pdd/decoupling/decouple.hpp>
+#include <pdd/decoupling/decoupling_parameter.hpp>
+#include <pdd/decoupling/interface_split.hpp>
+#include <pdd/geometry/lfs.hpp>
+#include <pdd/parallel/sequential_executor.hpp>
+#include <pdd/parallel/tbb_executor.hpp>
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+#include <numbers>
+#include <random>
+#include <set>
+#include <stdexcept>
+#include <vector>
+
+namespace {
+
+using pdd::index_t;
+using pdd::point;
+
+double dist(point a, point b) { return std::hypot(b.x - a.x, b.y - a.y); }
+
+TEST(Lemma9, PieceLengthsForManyLengthsAndK) {
+  std::mt19937_64 rng(20240611);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double lower = 2.0 / std::sqrt(3.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double k = std::pow(10.0, -6.0 + 8.0 * unit(rng));
+    // eq. 6.1: k <= L / 4, so every segment is at least 4k long.
+    const double l = k * (4.0 + std::pow(10.0, 3.0 * unit(rng)) * unit(rng));
+    const double angle = 2 * std::numbers::pi * unit(rng);
+    const point a{1e3 * (unit(rng) - 0.5), 1e3 * (unit(rng) - 0.5)};
+    point b{a.x + l * std::cos(angle), a.y + l * std::sin(angle)};
+    point lo = std::min(a, b), hi = std::max(a, b);
+    const double len = dist(lo, hi);
+    const index_t nu = pdd::interface_split_count(len, k);
+    ASSERT_GE(nu, 3u) << "l " << len << " k " << k;
+    EXPECT_LE(2.0 * (nu - 1) * k, len * (1 + 1e-12));
+    EXPECT_LT(len, 2.0 * nu * k);
+    point prev = lo;
+    for (index_t i = 1; i <= nu; ++i) {
+      const point p = i == nu ? hi : pdd::interface_split_point(lo, hi, i, nu);
+      const double piece = dist(prev, p);
+      ASSERT_GE(piece, lower * k) << "l " << len << " k " << k << " nu " << nu << " i " << i;
+      ASSERT_LT(piece, 2.0 * k) << "l " << len << " k " << k << " nu " << nu << " i " << i;
+      prev = p;
+    }
+  }
+}
+
+TEST(Lemma9, ExactBoundaries) {
+  // l = 2 (nu - 1) k exactly: nu pieces of length 2 (nu - 1) k / nu.
+  EXPECT_EQ(pdd::interface_split_count(4.0, 1.0), 3u);
+  EXPECT_EQ(pdd::interface_split_count(6.0, 1.0), 4u);
+  EXPECT_EQ(pdd::interface_split_count(5.999, 1.0), 3u);
+  // Short segments (k above L / 4, only with k_override) still give pieces < 2k.
+  EXPECT_EQ(pdd::interface_split_count(1.0, 1.0), 1u);
+  EXPECT_EQ(pdd::interface_split_count(2.0, 1.0), 2u);
+  EXPECT_THROW(pdd::interface_split_count(1.0, 0.0), pdd::decoupling_error);
+  EXPECT_THROW(pdd::interface_split_count(-1.0, 1.0), pdd::decoupling_error);
+  EXPECT_THROW(pdd::interface_split_count(1e10, 1e-10), pdd::limit_error);
+}
+
+TEST(CanonicalSplit, BothSidesGetBitwiseIdenticalPoints) {
+  // Split the shared interface from either subdomain of a 2-piece decomposition: the inputs
+  // of both sides contain exactly the same interface points, bit for bit.
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 50; ++trial) {
+    const double w = 0.5 + 3 * unit(rng), h = 0.5 + 3 * unit(rng);
+    auto c = pdd::test::grid_case(2, 1, w, h);
+    pdd::decoupling_options o;
+    o.criteria.max_area = 1e-4 * (1 + unit(rng));
+    const auto dd = pdd::decouple(c.parts, o);
+    ASSERT_EQ(dd.path.size(), 1u);
+    const auto left = dd.input(0), right = dd.input(1);
+    std::vector<point> pl, pr;
+    const auto collect = [](const pdd::subdomain_input& in, std::vector<point>& out) {
+      for (std::size_t s = 0; s < in.domain.segments.size(); ++s)
+        if (in.segment_path_edge[s] != pdd::no_index) {
+          out.push_back(in.domain.vertices[in.domain.segments[s].a]);
+          out.push_back(in.domain.vertices[in.domain.segments[s].b]);
+        }
+      std::sort(out.begin(), out.end());
+      out.erase(std::unique(out.begin(), out.end()), out.end());
+    };
+    collect(left, pl);
+    collect(right, pr);
+    ASSERT_EQ(pl.size(), dd.path[0].pieces + 1);
+    ASSERT_EQ(pl, pr); // operator== on doubles: exact
+    for (std::size_t i = 0; i < pl.size(); ++i) {
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(pl[i].x), std::bit_cast<std::uint64_t>(pr[i].x));
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(pl[i].y), std::bit_cast<std::uint64_t>(pr[i].y));
+    }
+    // The left side walks the separator upwards (counter-clockwise), the right side downwards.
+    EXPECT_EQ(left.domain.segments.size() - 3, dd.path[0].pieces);
+  }
+}
+
+TEST(CanonicalSplit, OrientationIndependentOfWalkingDirection) {
+  const point a{0.1, 0.7}, b{0.1, 0.2};
+  const point lo = std::min(a, b), hi = std::max(a, b);
+  for (index_t nu = 1; nu < 50; ++nu)
+    for (index_t i = 1; i < nu; ++i) {
+      const point p = pdd::interface_split_point(lo, hi, i, nu);
+      const point q = pdd::interface_split_point(std::min(b, a), std::max(b, a), i, nu);
+      EXPECT_EQ(p, q);
+      EXPECT_EQ(p.x, 0.1);
+    }
+}
+
+TEST(DecouplingParameter, Formula) {
+  pdd::mesh_criteria c; // 20.7 deg, no area bound
+  EXPECT_EQ(pdd::decoupling_parameter(0.3, 2.0, c), 0.3);
+  EXPECT_EQ(pdd::decoupling_parameter(0.6, 2.0, c), 0.5);
+  EXPECT_TRUE(std::isinf(pdd::decoupling_area_term(c)));
+  c.max_area = 0.02;
+  const double area_term = 0.5 * std::sqrt(0.02 / std::sqrt(2.0));
+  EXPECT_NEAR(pdd::decoupling_area_term(c), area_term, 1e-15);
+  EXPECT_NEAR(pdd::decoupling_parameter(1.0, 2.0, c), area_term, 1e-15);
+  // Smaller angles (B > sqrt 2) use B itself; larger angles keep sqrt 2.
+  c.min_angle_deg = 10.0;
+  EXPECT_NEAR(pdd::decoupling_area_term(c), 0.5 * std::sqrt(0.02 / c.ratio_bound()), 1e-15);
+  c.min_angle_deg = 30.0;
+  EXPECT_NEAR(pdd::decoupling_area_term(c), area_term, 1e-15);
+  // Lemma 14: a triangle of area > A with ratio <= sqrt 2 has all edges > sqrt(A / sqrt 2);
+  // check on an equilateral-ish and a skinny admissible triangle.
+  const double A = 0.02, l = std::sqrt(A / std::sqrt(2.0));
+  const double eq_side = std::sqrt(4 * A / std::sqrt(3.0)) * 1.0001; // area just above A
+  EXPECT_GT(eq_side, l);
+}
+
+TEST(Decouple, GridDecompositionK) {
+  for (int n : {1, 2, 4}) {
+    auto c = pdd::test::grid_case(n, n);
+    pdd::decoupling_options o;
+    const auto dd = pdd::decouple(c.parts, o);
+    const double h = 1.0 / n;
+    EXPECT_DOUBLE_EQ(dd.lfs_min, pdd::lfs_min(c.domain) / n);
+    if (n == 1) {
+      EXPECT_TRUE(dd.path.empty());
+      EXPECT_TRUE(std::isinf(dd.shortest_separator));
+      EXPECT_DOUBLE_EQ(dd.k, h);
+    } else {
+      EXPECT_EQ(dd.path.size(), static_cast<std::size_t>(2 * n * (n - 1)));
+      EXPECT_DOUBLE_EQ(dd.shortest_separator, h);
+      EXPECT_DOUBLE_EQ(dd.k, h / 4); // Proposition 12: min(lfs = h, L / 4)
+      for (const auto& e : dd.path) EXPECT_EQ(e.pieces, 3u); // 4k <= l < 6k
+    }
+    o.criteria.max_area = 1e-3;
+    const auto dd2 = pdd::decouple(c.parts, o);
+    EXPECT_DOUBLE_EQ(dd2.k, std::min(h / 4, 0.5 * std::sqrt(1e-3 / std::sqrt(2.0))));
+    o.k_scale = 0.5;
+    EXPECT_DOUBLE_EQ(pdd::decouple(c.parts, o).k, dd2.k * 0.5);
+    o.k_override = 0.01;
+    EXPECT_EQ(pdd::decouple(c.parts, o).k, 0.01);
+  }
+}
+
+TEST(Decouple, SubdomainInputs) {
+  auto c = pdd::test::annulus_case();
+  pdd::decoupling_options o;
+  o.criteria.max_area = 2e-3;
+  const auto dd = pdd::decouple(c.parts, o);
+  ASSERT_EQ(dd.path.size(), 4u);
+  EXPECT_DOUBLE_EQ(dd.shortest_separator, 0.5);
+  for (index_t s = 0; s < 4; ++s) {
+    const auto in = dd.input(s);
+    const auto& g = in.domain;
+    ASSERT_EQ(in.segment_path_edge.size(), g.segments.size());
+    std::size_t pieces = 0, external = 0;
+    for (std::size_t j = 0; j < g.segments.size(); ++j) {
+      const auto& sg = g.segments[j];
+      // the segments form one closed loop: each ends where the next starts
+      EXPECT_EQ(sg.b, g.segments[(j + 1) % g.segments.size()].a);
+      if (in.segment_path_edge[j] == pdd::no_index) {
+        ++external;
+        EXPECT_NE(sg.marker, pdd::interface_marker);
+      } else {
+        ++pieces;
+        EXPECT_EQ(sg.marker, pdd::interface_marker);
+        const double len = dist(g.vertices[sg.a], g.vertices[sg.b]);
+        EXPECT_GE(len, 2 * dd.k / std::sqrt(3.0));
+        EXPECT_LT(len, 2 * dd.k);
+      }
+    }
+    EXPECT_EQ(external, 12u); // 8 outer and 4 inner edges per quarter
+    EXPECT_EQ(pieces, dd.path[0].pieces * 2);
+    EXPECT_GT(pdd::detail::subdomain_area(dd.parts, s), 0.0);
+    EXPECT_NEAR(pdd::detail::subdomain_area(dd.parts, s),
+                (32 * std::sin(2 * std::numbers::pi / 32) - 0.25 * 16 * std::sin(2 * std::numbers::pi / 16)) / 8,
+                1e-12);
+  }
+  EXPECT_EQ(dd.num_split_points(), 4 * (dd.path[0].pieces - 1));
+}
+
+TEST(Decouple, RejectsMalformedDecompositions) {
+  pdd::decoupling_options o;
+  {
+    auto c = pdd::test::grid_case(2, 2);
+    c.parts.subdomains[1].tags[0][3].neighbour = 3; // left edge of cell (1,0) names cell (1,1)
+    EXPECT_THROW(pdd::decouple(c.parts, o), pdd::decoupling_error);
+  }
+  {
+    auto c = pdd::test::grid_case(2, 1);
+    c.parts.subdomains[1].tags[0][3] = {pdd::edge_tag::kind::external, 9, 0, pdd::no_index};
+    EXPECT_THROW(pdd::decouple(c.parts, o), pdd::decoupling_error); // interface on one side only
+  }
+  {
+    auto c = pdd::test::grid_case(2, 1);
+    c.parts.subdomains[0].tags[0][0].marker = pdd::interface_marker;
+    EXPECT_THROW(pdd::decouple(c.parts, o), pdd::decoupling_error);
+  }
+  {
+    auto c = pdd::test::grid_case(2, 1);
+    c.parts.subdomains[0].loops[0].pop_back();
+    EXPECT_THROW(pdd::decouple(c.parts, o), pdd::decoupling_error);
+  }
+  EXPECT_THROW(pdd::decouple(pdd::decomposition{}, o), pdd::decoupling_error);
+}
+
+TEST(Decouple, ResplitHalvesPieces) {
+  auto c = pdd::test::grid_case(2, 1);
+  pdd::decoupling_options o;
+  auto dd = pdd::decouple(c.parts, o);
+  const index_t before = dd.path[0].pieces;
+  dd.resplit(0, dd.path[0].k / 2);
+  EXPECT_GE(dd.path[0].pieces, 2 * before - 1);
+  const auto l = dd.input(0), r = dd.input(1);
+  EXPECT_EQ(l.domain.vertices.size(), r.domain.vertices.size());
+  EXPECT_EQ(l.domain.vertices.size(), 4u + dd.path[0].pieces - 1);
+}
+
+// --- executors ---------------------------------------------------------------------------------
+
+template <class E>
+void check_executor(const E& ex) {
+  const std::vector<double> work{1, 5, 3, 5, 0, 2};
+  std::vector<std::atomic<int>> runs(work.size());
+  std::mutex m;
+  std::vector<index_t> started;
+  ex.run(work, [&](index_t i) {
+    ++runs[i];
+    const std::lock_guard lock(m);
+    started.push_back(i);
+  });
+  for (auto& r : runs) EXPECT_EQ(r.load(), 1);
+  if (ex.concurrency() == 1) {
+    EXPECT_EQ(started, (std::vector<index_t>{1, 3, 2, 5, 0, 4}));
+  }
+  // Errors: all jobs still run; the smallest failing id is reported, wrapped.
+  for (int repeat = 0; repeat < 20; ++repeat) {
+    std::atomic<int> count{0};
+    try {
+      ex.run(work, [&](index_t i) {
+        ++count;
+        if (i == 4) throw std::runtime_error("boom four");
+        if (i == 2) throw std::runtime_error("boom two");
+      });
+      FAIL() << "no exception";
+    } catch (const pdd::meshing_error& e) {
+      EXPECT_EQ(e.subdomain(), 2);
+      EXPECT_NE(std::string(e.what()).find("boom two"), std::string::npos);
+      EXPECT_NE(std::string(e.what()).find("subdomain 2"), std::string::npos);
+    }
+    EXPECT_EQ(count.load(), 6);
+  }
+  // A meshing_error passes unchanged.
+  try {
+    ex.run(work, [&](index_t i) {
+      if (i == 3) throw pdd::meshing_error(42, "inner");
+    });
+    FAIL() << "no exception";
+  } catch (const pdd::meshing_error& e) {
+    EXPECT_EQ(e.subdomain(), 42);
+  }
+  ex.run(std::vector<double>{}, [](index_t) { FAIL(); });
+}
+
+TEST(Executors, SequentialOrderAndErrors) { check_executor(pdd::sequential_executor{}); }
+TEST(Executors, TbbOneThread) {
+  EXPECT_EQ(pdd::tbb_executor{1}.concurrency(), 1u);
+  check_executor(pdd::tbb_executor{1});
+}
+TEST(Executors, TbbTwoAndFourThreads) {
+  check_executor(pdd::tbb_executor{2});
+  check_executor(pdd::tbb_executor{4});
+  EXPECT_GE(pdd::tbb_executor{}.concurrency(), 1u);
+}
+TEST(Executors, TbbRunsConcurrently) {
+  // With 2 threads, two jobs that wait for each other both finish.
+  std::atomic<int> arrived{0};
+  pdd::tbb_executor{2}.run(std::vector<double>{1, 1}, [&](index_t) {
+    ++arrived;
+    for (int spin = 0; arrived.load() < 2 && spin < 200000000; ++spin) {
+    }
+  });
+  EXPECT_EQ(arrived.load(), 2);
+}
+
+} // namespace
