@@ -1,0 +1,226 @@
+/// \file detail/validate.hpp
+/// Implementation of pdd/geometry/validate.hpp: the individual checks.
+#pragma once
+
+#include <pdd/detail/loops.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/pslg.hpp>
+
+#include <CGAL/Bbox_2.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <vector>
+
+namespace pdd::detail {
+
+inline std::string coords(const point& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
+  return buf;
+}
+
+inline std::string seg_text(const pslg& g, std::size_t s) {
+  return "segment " + std::to_string(s) + " (vertices " + std::to_string(g.segments[s].a) + " " +
+         coords(g.vertices[g.segments[s].a]) + " and " + std::to_string(g.segments[s].b) + " " +
+         coords(g.vertices[g.segments[s].b]) + ")";
+}
+
+/// At least 3 vertices; finite coordinates of vertices, hole points and region points.
+inline void check_coordinates(const pslg& g) {
+  if (g.vertices.size() < 3)
+    throw geometry_error("a PSLG needs at least 3 vertices, this one has " +
+                         std::to_string(g.vertices.size()));
+  auto finite = [](const point& p) { return std::isfinite(p.x) && std::isfinite(p.y); };
+  for (std::size_t i = 0; i < g.vertices.size(); ++i)
+    if (!finite(g.vertices[i]))
+      throw geometry_error("vertex " + std::to_string(i) + " has a non-finite coordinate " +
+                               coords(g.vertices[i]),
+                           {i});
+  for (std::size_t i = 0; i < g.holes.size(); ++i)
+    if (!finite(g.holes[i]))
+      throw geometry_error("hole point " + std::to_string(i) + " has a non-finite coordinate " +
+                               coords(g.holes[i]),
+                           {i});
+  for (std::size_t i = 0; i < g.regions.size(); ++i)
+    if (!finite(g.regions[i].p))
+      throw geometry_error("region point " + std::to_string(i) + " has a non-finite coordinate " +
+                               coords(g.regions[i].p),
+                           {i});
+}
+
+/// No two vertices with exactly equal coordinates. O(V log V).
+inline void check_duplicate_vertices(const pslg& g) {
+  std::vector<index_t> order(g.vertices.size());
+  std::iota(order.begin(), order.end(), index_t{0});
+  std::sort(order.begin(), order.end(), [&](index_t a, index_t b) {
+    return std::tie(g.vertices[a], a) < std::tie(g.vertices[b], b);
+  });
+  std::optional<std::pair<index_t, index_t>> first;
+  for (std::size_t k = 1; k < order.size(); ++k)
+    if (g.vertices[order[k]] == g.vertices[order[k - 1]]) {
+      const std::pair<index_t, index_t> p{order[k - 1], order[k]};
+      if (!first || p < *first) first = p;
+    }
+  if (first)
+    throw geometry_error("duplicate vertices " + std::to_string(first->first) + " and " +
+                             std::to_string(first->second) + " have the same coordinates " +
+                             coords(g.vertices[first->first]),
+                         {first->first, first->second});
+}
+
+/// No two segments joining the same two vertices (in either direction). O(S log S).
+inline void check_duplicate_segments(const pslg& g) {
+  std::vector<std::tuple<index_t, index_t, index_t>> keys;
+  keys.reserve(g.segments.size());
+  for (std::size_t s = 0; s < g.segments.size(); ++s)
+    keys.emplace_back(std::min(g.segments[s].a, g.segments[s].b),
+                      std::max(g.segments[s].a, g.segments[s].b), static_cast<index_t>(s));
+  std::sort(keys.begin(), keys.end());
+  for (std::size_t k = 1; k < keys.size(); ++k)
+    if (std::get<0>(keys[k]) == std::get<0>(keys[k - 1]) &&
+        std::get<1>(keys[k]) == std::get<1>(keys[k - 1])) {
+      const std::size_t s = std::get<2>(keys[k - 1]), t = std::get<2>(keys[k]);
+      throw geometry_error("duplicate segments " + std::to_string(s) + " and " + std::to_string(t) +
+                               " both join vertices " + std::to_string(std::get<0>(keys[k])) +
+                               " and " + std::to_string(std::get<1>(keys[k])),
+                           {s, t});
+    }
+}
+
+/// How two segments meet improperly.
+struct segment_clash {
+  enum class kind { cross, overlap, touch } type = kind::cross;
+  index_t s = 0, t = 0;      ///< the two segments, s < t
+  index_t vertex = no_index; ///< touch: the vertex lying in the interior of `on`
+  index_t on = no_index;     ///< touch: the segment whose interior holds `vertex`
+};
+
+/// Classifies two segments exactly (EPICK predicates); nothing if they only share an
+/// endpoint at an angle or are disjoint. \pre distinct vertices, no duplicate segments.
+inline std::optional<segment_clash> classify_pair(const pslg& g, index_t s, index_t t) {
+  if (s > t) std::swap(s, t);
+  const segment &u = g.segments[s], &w = g.segments[t];
+  const auto pt = [&](index_t v) { return to_cgal(g.vertices[v]); };
+  using kind = segment_clash::kind;
+  const bool shared_a = u.a == w.a || u.a == w.b, shared_b = u.b == w.a || u.b == w.b;
+  if (shared_a || shared_b) {
+    const index_t p = shared_a ? u.a : u.b, q = shared_a ? u.b : u.a;
+    const index_t r = w.a == p ? w.b : w.a;
+    if (CGAL::collinear(pt(p), pt(q), pt(r)) && CGAL::angle(pt(q), pt(p), pt(r)) == CGAL::ACUTE)
+      return segment_clash{kind::overlap, s, t};
+    return std::nullopt;
+  }
+  const epick::Segment_2 su(pt(u.a), pt(u.b)), sw(pt(w.a), pt(w.b));
+  if (!CGAL::do_intersect(su, sw)) return std::nullopt;
+  if (CGAL::collinear(pt(u.a), pt(u.b), pt(w.a)) && CGAL::collinear(pt(u.a), pt(u.b), pt(w.b)))
+    return segment_clash{kind::overlap, s, t};
+  for (index_t v : {w.a, w.b})
+    if (CGAL::collinear(pt(u.a), pt(u.b), pt(v))) return segment_clash{kind::touch, s, t, v, s};
+  for (index_t v : {u.a, u.b})
+    if (CGAL::collinear(pt(w.a), pt(w.b), pt(v))) return segment_clash{kind::touch, s, t, v, t};
+  return segment_clash{kind::cross, s, t};
+}
+
+/// No two segments cross, overlap, or touch in the interior of one of them. Candidate pairs
+/// come from CGAL::box_self_intersection_d on the segments' bounding boxes
+/// (O(S log^2 S + K) for K box pairs); each is decided with exact predicates. Reports the
+/// clash with the smallest pair of segment ids (deterministic).
+inline void check_intersections(const pslg& g) {
+  using box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, index_t>;
+  std::vector<box> boxes;
+  boxes.reserve(g.segments.size());
+  for (std::size_t s = 0; s < g.segments.size(); ++s) {
+    const point a = g.vertices[g.segments[s].a], b = g.vertices[g.segments[s].b];
+    boxes.emplace_back(CGAL::Bbox_2(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
+                                    std::max(a.y, b.y)),
+                       static_cast<index_t>(s));
+  }
+  std::optional<segment_clash> first;
+  std::size_t count = 0;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const box& x, const box& y) {
+    const auto c = classify_pair(g, x.info(), y.info());
+    if (!c) return;
+    ++count;
+    if (!first || std::tie(c->s, c->t) < std::tie(first->s, first->t)) first = c;
+  });
+  if (!first) return;
+  const std::string more =
+      count > 1 ? " (and " + std::to_string(count - 1) + " more intersecting pairs)" : "";
+  using kind = segment_clash::kind;
+  if (first->type == kind::touch)
+    throw geometry_error("vertex " + std::to_string(first->vertex) + " " +
+                             coords(g.vertices[first->vertex]) + " lies in the interior of " +
+                             seg_text(g, first->on) + more,
+                         {first->vertex, first->on});
+  throw geometry_error(
+      std::string(first->type == kind::cross ? "segments cross: " : "segments overlap: ") +
+          seg_text(g, first->s) + " and " + seg_text(g, first->t) + more,
+      {first->s, first->t});
+}
+
+/// Hole points lie inside holes (regions at even level >= 2), not on segments, and every
+/// region at even level >= 2 has a hole point. Point location with CGAL's walk, hole points
+/// visited in spatial (Hilbert) order with the previous face as hint.
+inline void check_holes(const pslg& g, const loops_with_triangulation& lt) {
+  const auto& t = lt.triangulation;
+  const auto& loops = lt.structure.loops;
+  std::vector<char> has_hole(loops.size(), 0);
+  std::vector<epick::Point_2> pts;
+  for (const point& h : g.holes)
+    pts.push_back(to_cgal(h));
+  std::vector<std::size_t> order(pts.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  using pmap = CGAL::Pointer_property_map<epick::Point_2>::type;
+  CGAL::spatial_sort(
+      order.begin(), order.end(),
+      CGAL::Spatial_sort_traits_adapter_2<epick, pmap>(CGAL::make_property_map(pts)));
+  pslg_cdt::Face_handle hint;
+  for (std::size_t i : order) {
+    pslg_cdt::Locate_type lt_type;
+    int li = 0;
+    const auto f = t.cdt.locate(pts[i], lt_type, li, hint);
+    hint = f;
+    const std::string name = "hole point " + std::to_string(i) + " " + coords(g.holes[i]);
+    if (lt_type == pslg_cdt::VERTEX)
+      throw geometry_error(name + " lies on vertex " + std::to_string(f->vertex(li)->info()) +
+                               ", on a segment",
+                           {i});
+    if (lt_type == pslg_cdt::EDGE && f->is_constrained(li)) {
+      const index_t a = f->vertex(pslg_cdt::cw(li))->info();
+      const index_t b = f->vertex(pslg_cdt::ccw(li))->info();
+      throw geometry_error(name + " lies on the segment between vertices " +
+                               std::to_string(std::min(a, b)) + " and " +
+                               std::to_string(std::max(a, b)),
+                           {i});
+    }
+    const int level = t.cdt.is_infinite(f) ? 0 : f->info().level;
+    if (level == 0)
+      throw geometry_error(name + " lies outside the domain (not inside any loop)", {i});
+    if (level % 2 == 1)
+      throw geometry_error(name + " lies inside the meshed domain, not inside a hole loop", {i});
+    has_hole[f->info().owner] = 1;
+  }
+  for (std::size_t l = 0; l < loops.size(); ++l)
+    if (!loops[l].bounds_domain_inside && !has_hole[l])
+      throw geometry_error("loop " + std::to_string(l) + " (through vertex " +
+                               std::to_string(loops[l].vertices[0]) + " " +
+                               coords(g.vertices[loops[l].vertices[0]]) +
+                               ") encloses a region with no hole point: internal boundaries are "
+                               "not supported yet",
+                           {l});
+}
+
+} // namespace pdd::detail
