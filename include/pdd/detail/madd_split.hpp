@@ -1,0 +1,374 @@
+/// \file madd_split.hpp
+/// Implementation detail of MADD: one 2-way split of a region (dissertation 3.3-3.5 with the
+/// dynamic refinement of 4.1, the smoothing of 4.2 and the repairs of 5.1).
+///
+/// For refinement levels r, 2r, 4r, ... the region's boundary is discretised, triangulated and
+/// turned into the contracted MADD graph; the graph is bisected into two connected parts
+/// (pdd::connected_bisection) and the cut faces become the separator (Algorithms 3.3 / 3.6).
+/// A bisection is repaired and repeated (5.1) when two separator pieces would end at the same
+/// boundary vertex: that would pinch a subdomain there (a polygon touching itself) and may
+/// form an angle < Phi0 between them; all but the cheapest of those pieces are contracted.
+/// The children are read off the cells of each part; refinement vertices that no separator
+/// uses are dropped again, those it uses are reported so that the neighbour across the edge
+/// gets them too.
+#pragma once
+
+#include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/detail/madd_graph.hpp>
+#include <pdd/detail/madd_region.hpp>
+#include <pdd/detail/madd_triangulation.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/partition/connectivity.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace pdd::detail {
+
+/// Options of one split.
+struct madd_split_options {
+  madd_graph_options graph;
+  double target_length = 1.0;     ///< h at refinement level 0
+  int max_levels = 8;             ///< levels h, h/2, h/4, ...
+  int extra_levels = 2;           ///< levels tried after a first valid but unbalanced split
+  int max_encroachment_depth = 8;
+  double imbalance_bound = 0.75;  ///< L_b: largest child area / region area accepted at once
+  double max_part_fraction = 0.55; ///< given to the partitioner
+  int max_repairs = 64;
+  std::uint64_t seed = 1;
+};
+
+/// The result of one split.
+struct madd_split_result {
+  bool ok = false;
+  std::array<madd_region, 2> children;
+  std::vector<madd_edge_split> kept; ///< refinement vertices that separators end at
+  int level = -1;
+  double separator_length = 0.0;
+  double min_angle = 180.0;     ///< smallest angle the separator forms (degrees)
+  double max_fraction = 1.0;    ///< largest child area / region area
+  std::size_t z_points = 0;     ///< |Z| at the level used
+  std::size_t junctions = 0;
+  std::size_t graph_nodes = 0;
+  std::size_t repairs = 0;
+  std::size_t smoothing_moves = 0;
+  std::size_t levels_tried = 0;
+  std::string failure; ///< why there is no split (when !ok)
+};
+
+/// Part of every cell for a part of every node.
+inline std::vector<std::uint8_t> cell_parts(const madd_graph& g,
+                                            const std::vector<std::uint8_t>& node_part) {
+  std::vector<std::uint8_t> part(g.cells.size());
+  for (std::size_t c = 0; c < part.size(); ++c)
+    part[c] = node_part[g.node[c]];
+  return part;
+}
+
+inline bool is_cut(const madd_cell_face& f, const std::vector<std::uint8_t>& part) {
+  return f.cuttable && part[f.a] != part[f.b];
+}
+
+/// Boundary vertices at which two or more cut faces end (they would pinch a child there).
+inline std::vector<std::uint32_t> pinch_vertices(const madd_triangulation& tr, const madd_graph& g,
+                                                 const std::vector<std::uint8_t>& part) {
+  std::vector<std::uint8_t> count(tr.z.size(), 0);
+  std::vector<std::uint32_t> bad;
+  auto bump = [&](std::uint32_t z) {
+    if (++count[z] == 2) bad.push_back(z);
+  };
+  for (const madd_cell_face& f : g.faces) {
+    if (!is_cut(f, part)) continue;
+    bump(f.z0);
+    if (f.z1 != no_index) bump(f.z1);
+  }
+  return bad;
+}
+
+/// True if the nodes of part p other than `without` are connected in pg (and non-empty).
+inline bool part_connected_without(const partition_graph& pg, const std::vector<std::uint8_t>& np,
+                                   std::uint8_t p, std::size_t without) {
+  const std::size_t n = boost::num_vertices(pg);
+  std::size_t start = n, members = 0;
+  for (std::size_t v = 0; v < n; ++v)
+    if (np[v] == p && v != without) {
+      if (start == n) start = v;
+      ++members;
+    }
+  if (members == 0) return false;
+  std::vector<char> seen(n, 0);
+  std::vector<std::size_t> stack{start};
+  seen[start] = 1;
+  std::size_t reached = 1;
+  while (!stack.empty()) {
+    const std::size_t v = stack.back();
+    stack.pop_back();
+    for (const auto e : boost::make_iterator_range(boost::out_edges(v, pg))) {
+      const std::size_t w = boost::target(e, pg);
+      if (seen[w] || np[w] != p || w == without) continue;
+      seen[w] = 1;
+      ++reached;
+      stack.push_back(w);
+    }
+  }
+  return reached == members;
+}
+
+/// Second smoothing step (4.2): moves single nodes across the cut while that lowers the
+/// weighted separator cost (f0 f1 times the length), keeps both parts connected, keeps the
+/// larger part <= L_b of the total (or no larger than before) and pinches no child.
+inline std::size_t smooth_bisection(const madd_triangulation& tr, const madd_graph& g,
+                                    const partition_graph& pg, std::vector<std::uint8_t>& np,
+                                    double bound) {
+  const std::size_t n = boost::num_vertices(pg);
+  double total = 0.0;
+  std::array<double, 2> pw{0.0, 0.0};
+  for (std::size_t v = 0; v < n; ++v) {
+    total += pg[v].weight;
+    pw[np[v]] += pg[v].weight;
+  }
+  std::size_t moves = 0;
+  for (int pass = 0; pass < 4; ++pass) {
+    bool improved = false;
+    for (std::size_t x = 0; x < n; ++x) {
+      const std::uint8_t p = np[x];
+      double gain = 0.0, wsum = 0.0;
+      for (const auto e : boost::make_iterator_range(boost::out_edges(x, pg))) {
+        const double w = pg[e].weight;
+        wsum += w;
+        gain += np[boost::target(e, pg)] != p ? w : -w;
+      }
+      if (!(gain > 1e-12 * wsum)) continue;
+      const double before = std::max(pw[0], pw[1]);
+      const double after = std::max(pw[p] - pg[x].weight, pw[1 - p] + pg[x].weight);
+      if (after > std::max(bound * total, before)) continue;
+      if (!part_connected_without(pg, np, p, x)) continue;
+      np[x] = static_cast<std::uint8_t>(1 - p);
+      if (!pinch_vertices(tr, g, cell_parts(g, np)).empty()) {
+        np[x] = p;
+        continue;
+      }
+      pw[p] -= pg[x].weight;
+      pw[1 - p] += pg[x].weight;
+      ++moves;
+      improved = true;
+    }
+    if (!improved) break;
+  }
+  return moves;
+}
+
+/// Reads the two children off a bisection of the cells; false if a child is not a polygon
+/// with holes (never expected after the pinch repairs).
+inline bool extract_children(const madd_region& r, const madd_triangulation& tr,
+                             const madd_graph& g, const std::vector<std::uint8_t>& part,
+                             madd_split_result& out) {
+  const auto nz = static_cast<std::uint32_t>(tr.z.size());
+  const std::size_t nv = nz + tr.faces.size();
+  auto coord = [&](std::uint32_t v) { return v < nz ? tr.z[v].p : g.info[v - nz].c; };
+  std::vector<std::uint32_t> next(nv, no_index);
+  std::vector<char> sep(nv, 0); // the edge leaving v is a separator piece
+  std::vector<char> used_by_separator(nz, 0);
+  for (std::uint8_t p = 0; p < 2; ++p) {
+    std::fill(next.begin(), next.end(), no_index);
+    std::vector<std::uint32_t> starts;
+    for (std::uint32_t c = 0; c < g.cells.size(); ++c) {
+      if (part[c] != p) continue;
+      const madd_cell& cell = g.cells[c];
+      const auto& v = tr.faces[cell.tri].v;
+      const std::uint32_t cc = nz + cell.tri;
+      for (int s = 0; s < 3; ++s) {
+        std::uint32_t from, to;
+        if (cell.sub < 0) {
+          from = v[(s + 1) % 3];
+          to = v[(s + 2) % 3];
+        } else {
+          const std::uint32_t a = v[(cell.sub + 1) % 3], b = v[(cell.sub + 2) % 3];
+          from = s == 0 ? a : s == 1 ? b : cc;
+          to = s == 0 ? b : s == 1 ? cc : a;
+        }
+        const std::int32_t fi = cell.side[s];
+        bool is_sep = false;
+        if (fi >= 0) {
+          const madd_cell_face& f = g.faces[fi];
+          const std::uint32_t other = f.a == c ? f.b : f.a;
+          if (part[other] == p) continue;
+          PDD_ASSERT(f.cuttable);
+          is_sep = true;
+        }
+        if (next[from] != no_index) return false; // pinch
+        next[from] = to;
+        sep[from] = is_sep ? 1 : 0;
+        starts.push_back(from);
+        if (is_sep) {
+          if (from < nz) used_by_separator[from] = 1;
+          if (to < nz) used_by_separator[to] = 1;
+        }
+      }
+    }
+    std::sort(starts.begin(), starts.end());
+    std::vector<char> done(nv, 0);
+    madd_region child;
+    int outer = -1;
+    for (const std::uint32_t s0 : starts) {
+      if (done[s0]) continue;
+      // Collect the loop, then drop refinement vertices between two boundary pieces.
+      std::vector<std::uint32_t> cyc;
+      std::uint32_t v = s0;
+      do {
+        if (done[v] || next[v] == no_index) return false;
+        done[v] = 1;
+        cyc.push_back(v);
+        v = next[v];
+      } while (v != s0);
+      const std::size_t m = cyc.size();
+      madd_loop loop;
+      for (std::size_t i = 0; i < m; ++i) {
+        const std::uint32_t x = cyc[i];
+        const std::uint32_t prev = cyc[(i + m - 1) % m];
+        if (x < nz && !tr.z[x].original && !sep[x] && !sep[prev]) continue;
+        loop.points.push_back(coord(x));
+        loop.markers.push_back(x < nz ? tr.z[x].marker : 0);
+        if (sep[x]) {
+          loop.tags.push_back(madd_edge_tag{});
+        } else {
+          const madd_zvertex& zx = tr.z[x];
+          loop.tags.push_back(r.loops[zx.loop].tags[zx.edge]);
+        }
+      }
+      if (loop.size() < 3) return false;
+      if (signed_area(loop.points) > 0.0) {
+        if (outer >= 0) return false;
+        outer = static_cast<int>(child.loops.size());
+      }
+      child.loops.push_back(std::move(loop));
+    }
+    if (outer < 0) return false;
+    std::rotate(child.loops.begin(), child.loops.begin() + outer, child.loops.begin() + outer + 1);
+    child.area = region_area(child);
+    out.children[p] = std::move(child);
+  }
+  out.kept.clear();
+  for (std::uint32_t x = 0; x < nz; ++x) {
+    const madd_zvertex& zx = tr.z[x];
+    if (zx.original || !used_by_separator[x]) continue;
+    const madd_loop& l = r.loops[zx.loop];
+    const point a = l.points[zx.edge], b = l.points[(zx.edge + 1) % l.size()];
+    out.kept.push_back({std::min(a, b), std::max(a, b), zx.t, zx.p, zx.marker});
+  }
+  return true;
+}
+
+/// Length and smallest angle of the separator of a bisection.
+inline void separator_measures(const madd_triangulation& tr, const madd_graph& g,
+                               const std::vector<std::uint8_t>& part, madd_split_result& out) {
+  out.separator_length = 0.0;
+  out.min_angle = 180.0;
+  std::vector<int> first_cut(tr.faces.size(), -1);
+  for (std::size_t i = 0; i < g.faces.size(); ++i) {
+    const madd_cell_face& f = g.faces[i];
+    if (!is_cut(f, part)) continue;
+    out.separator_length += f.length;
+    out.min_angle = std::min(out.min_angle, f.min_angle);
+    if (f.tri == no_index) continue;
+    if (first_cut[f.tri] < 0) {
+      first_cut[f.tri] = static_cast<int>(i);
+    } else {
+      const madd_cell_face& h = g.faces[first_cut[f.tri]];
+      out.min_angle = std::min(
+          out.min_angle, angle_deg(g.info[f.tri].c, tr.z[f.z0].p, tr.z[h.z0].p));
+    }
+  }
+}
+
+/// Bisects the contracted graph with repairs; on success fills out (children, measures).
+template <GraphPartitioner P>
+bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_graph& g,
+                   const madd_split_options& o, const P& partitioner, madd_split_result& out) {
+  const bisection_options bo{o.max_part_fraction, o.seed};
+  for (int attempt = 0; attempt <= o.max_repairs; ++attempt) {
+    if (g.nodes < 2) {
+      out.failure = "every candidate separator was contracted by the repairs";
+      return false;
+    }
+    const partition_graph pg = contracted_graph(g);
+    std::vector<std::uint8_t> np = connected_bisection(pg, partitioner, bo);
+    if (o.graph.smoothing) out.smoothing_moves += smooth_bisection(tr, g, pg, np, o.imbalance_bound);
+    const std::vector<std::uint8_t> part = cell_parts(g, np);
+    const std::vector<std::uint32_t> bad = pinch_vertices(tr, g, part);
+    if (bad.empty()) {
+      if (!extract_children(r, tr, g, part, out)) {
+        out.failure = "a child is not a polygon with holes";
+        return false;
+      }
+      separator_measures(tr, g, part, out);
+      out.graph_nodes = g.nodes;
+      return true;
+    }
+    // 5.1: contract all but the cheapest cut piece at every vertex where several end.
+    ++out.repairs;
+    for (const std::uint32_t z : bad) {
+      std::int64_t keep = -1;
+      for (std::size_t i = 0; i < g.faces.size(); ++i) {
+        const madd_cell_face& f = g.faces[i];
+        if (!is_cut(f, part) || (f.z0 != z && f.z1 != z)) continue;
+        if (keep < 0 || f.weight < g.faces[keep].weight) keep = static_cast<std::int64_t>(i);
+      }
+      for (std::size_t i = 0; i < g.faces.size(); ++i) {
+        madd_cell_face& f = g.faces[i];
+        if (static_cast<std::int64_t>(i) != keep && is_cut(f, part) && (f.z0 == z || f.z1 == z))
+          f.cuttable = false;
+      }
+    }
+    contract(g);
+  }
+  out.failure = "the repairs did not converge";
+  return false;
+}
+
+/// Splits a region in two (one MADD step with dynamic refinement). Deterministic: a pure
+/// function of (r, o) for a deterministic partitioner. Thread-safe when the partitioner is.
+/// Never throws for a region that cannot be split: ok is false and failure says why.
+template <GraphPartitioner P>
+madd_split_result split_region(const madd_region& r, const madd_split_options& o,
+                               const P& partitioner) {
+  madd_split_result best;
+  best.failure = "no refinement level was tried";
+  int stop_level = o.max_levels;
+  for (int level = 0; level < stop_level; ++level) {
+    ++best.levels_tried;
+    const double h = std::ldexp(o.target_length, -level);
+    const madd_triangulation tr = triangulate_region(r, h, o.max_encroachment_depth);
+    madd_graph g = build_madd_graph(tr, o.graph);
+    madd_split_result cur;
+    cur.level = level;
+    cur.z_points = tr.z.size();
+    cur.junctions = g.junctions;
+    if (g.nodes < 2) {
+      if (!best.ok)
+        best.failure = "no acceptable separator (" + std::to_string(g.junctions) +
+                       " junction triangles, " + std::to_string(tr.z.size()) +
+                       " boundary points) after " + std::to_string(level + 1) +
+                       " refinement levels";
+      continue;
+    }
+    if (!bisect_region(r, tr, g, o, partitioner, cur)) {
+      if (!best.ok) best.failure = cur.failure + " (refinement level " + std::to_string(level) + ")";
+      continue;
+    }
+    cur.ok = true;
+    cur.max_fraction = std::max(cur.children[0].area, cur.children[1].area) /
+                       (cur.children[0].area + cur.children[1].area);
+    cur.levels_tried = best.levels_tried;
+    if (!best.ok || cur.max_fraction < best.max_fraction) best = std::move(cur);
+    if (best.max_fraction <= o.imbalance_bound) break;
+    stop_level = std::min(stop_level, level + 1 + o.extra_levels);
+  }
+  return best;
+}
+
+} // namespace pdd::detail

@@ -1,0 +1,301 @@
+/// \file madd_triangulation.hpp
+/// Implementation detail of MADD: the boundary discretisation Z of a region and its
+/// boundary-conforming Delaunay triangulation (dissertation 3.2, conditions (i)-(ii), and the
+/// static/dynamic refinement of 4.1).
+///
+/// Every region edge longer than the target length h is bisected (exact canonical midpoints)
+/// to 2^d pieces of length <= h. Then every piece whose diametral circle contains a vertex of
+/// Z (tested on the constrained Delaunay triangulation, exact predicates) is bisected until no
+/// piece is encroached (condition (ii)): the CDT is then the Delaunay triangulation of Z and
+/// every circumcentre lies in the region (Lemma 4). Small input angles can make this cascade
+/// forever (two pieces at a corner of angle < 60 degrees encroach on each other at every
+/// level), so a piece is bisected at most max_encroachment_depth times; the MADD steps after
+/// this one never rely on condition (ii) for correctness, only for the number of junction
+/// triangles.
+#pragma once
+
+#include <pdd/detail/madd_region.hpp>
+#include <pdd/errors.hpp>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <utility>
+#include <vector>
+
+namespace pdd::detail {
+
+/// One vertex of the discretisation Z of a region's boundary.
+struct madd_zvertex {
+  point p;
+  int marker = 0;
+  std::uint32_t loop = 0; ///< region loop
+  std::uint32_t edge = 0; ///< region edge leaving this vertex (original) or containing it
+  bool original = true;   ///< a vertex of the region (else a refinement vertex)
+  std::uint8_t depth = 0; ///< encroachment bisections that created it
+  double t = 0.0;         ///< refinement vertex: exact dyadic parameter on the edge, canonical
+  std::uint32_t prev = 0; ///< previous vertex of Z along the loop
+  std::uint32_t next = 0; ///< next vertex of Z along the loop
+  point far_prev;         ///< region vertex that the boundary direction "backwards" points to
+  point far_next;         ///< region vertex that the boundary direction "forwards" points to
+};
+
+/// One triangle of the triangulation of a region (inside the region only).
+struct madd_face {
+  std::array<std::uint32_t, 3> v{}; ///< vertices of Z, counter-clockwise
+  /// Triangle across the edge opposite v[i]; -1 when that edge is a piece of the boundary.
+  std::array<std::int32_t, 3> nb{};
+};
+
+/// Z and the triangles of its constrained Delaunay triangulation that lie in the region.
+struct madd_triangulation {
+  std::vector<madd_zvertex> z;
+  std::vector<madd_face> faces;
+  std::size_t encroachment_splits = 0;
+};
+
+/// CGAL types of the MADD triangulation (exact predicates, inexact constructions).
+using madd_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+using madd_cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, madd_kernel>;
+using madd_cdt_fb = CGAL::Constrained_triangulation_face_base_2<
+    madd_kernel, CGAL::Triangulation_face_base_with_info_2<int, madd_kernel>>;
+using madd_cdt =
+    CGAL::Constrained_Delaunay_triangulation_2<madd_kernel,
+                                               CGAL::Triangulation_data_structure_2<madd_cdt_vb,
+                                                                                    madd_cdt_fb>,
+                                               CGAL::Exact_predicates_tag>;
+
+/// Parameter (canonical orientation of the region edge) of Z vertex w seen from the edge
+/// that starts at or contains Z vertex u (w == u or w == z[u].next).
+inline double z_edge_param(const madd_region& r, const madd_triangulation& tr, std::uint32_t u,
+                           std::uint32_t w) {
+  const madd_zvertex& zu = tr.z[u];
+  const madd_zvertex& zw = tr.z[w];
+  const madd_loop& l = r.loops[zu.loop];
+  const point a = l.points[zu.edge];
+  const point b = l.points[(zu.edge + 1) % l.size()];
+  const bool a_lo = a < b;
+  if (w == u) return zu.original ? (a_lo ? 0.0 : 1.0) : zu.t;
+  return zw.original ? (a_lo ? 1.0 : 0.0) : zw.t;
+}
+
+/// Appends the 2^depth - 1 bisection points of region edge (loop l, edge e) in loop order.
+inline void refine_region_edge(const madd_region& r, std::uint32_t l, std::uint32_t e, int depth,
+                               std::vector<madd_zvertex>& z) {
+  const madd_loop& lp = r.loops[l];
+  const point a = lp.points[e];
+  const point b = lp.points[(e + 1) % lp.size()];
+  const bool a_lo = a < b;
+  const point lo = a_lo ? a : b;
+  const point hi = a_lo ? b : a;
+  const int marker = lp.tags[e].external ? lp.tags[e].marker : 0;
+  std::vector<std::pair<double, point>> pts;
+  pts.reserve((std::size_t{1} << depth) - 1);
+  // In-order traversal of the bisection tree (depth <= 30).
+  auto rec = [&](auto&& self, point p, point q, double tp, double tq, int d) -> void {
+    if (d == 0) return;
+    const point m = canonical_midpoint(p, q);
+    const double tm = 0.5 * (tp + tq);
+    self(self, p, m, tp, tm, d - 1);
+    pts.emplace_back(tm, m);
+    self(self, m, q, tm, tq, d - 1);
+  };
+  rec(rec, lo, hi, 0.0, 1.0, depth);
+  if (!a_lo) std::reverse(pts.begin(), pts.end());
+  for (const auto& [t, p] : pts) {
+    madd_zvertex v;
+    v.p = p;
+    v.marker = marker;
+    v.loop = l;
+    v.edge = e;
+    v.original = false;
+    v.t = t;
+    v.far_prev = a;
+    v.far_next = b;
+    z.push_back(v);
+  }
+}
+
+/// Builds Z for a region (target piece length h > 0) and its constrained Delaunay
+/// triangulation, bisecting encroached pieces at most max_encroachment_depth times each.
+/// \pre r is a valid region (simple loops, holes inside the outer loop, no shared vertices).
+/// Complexity O(n log n) expected, n = |Z|. Thread-safe (no shared state).
+inline madd_triangulation triangulate_region(const madd_region& r, double h,
+                                             int max_encroachment_depth) {
+  madd_triangulation tr;
+  auto& z = tr.z;
+  // --- static refinement: every region edge in 2^d pieces of length <= h.
+  for (std::uint32_t l = 0; l < r.loops.size(); ++l) {
+    const madd_loop& lp = r.loops[l];
+    const auto first = static_cast<std::uint32_t>(z.size());
+    for (std::uint32_t e = 0; e < lp.size(); ++e) {
+      const point a = lp.points[e];
+      const point b = lp.points[(e + 1) % lp.size()];
+      madd_zvertex v;
+      v.p = a;
+      v.marker = lp.markers[e];
+      v.loop = l;
+      v.edge = e;
+      v.original = true;
+      v.far_prev = lp.points[(e + lp.size() - 1) % lp.size()];
+      v.far_next = b;
+      z.push_back(v);
+      const double len = distance(a, b);
+      int depth = 0;
+      while (depth < 30 && len > h * std::ldexp(1.0, depth))
+        ++depth;
+      refine_region_edge(r, l, e, depth, z);
+    }
+    const auto last = static_cast<std::uint32_t>(z.size());
+    for (std::uint32_t i = first; i < last; ++i) {
+      z[i].next = i + 1 == last ? first : i + 1;
+      z[i].prev = i == first ? last - 1 : i - 1;
+    }
+  }
+  // --- the constrained Delaunay triangulation of Z.
+  madd_cdt cdt;
+  {
+    std::vector<std::pair<madd_kernel::Point_2, std::uint32_t>> pts;
+    pts.reserve(z.size());
+    for (std::uint32_t i = 0; i < z.size(); ++i)
+      pts.emplace_back(madd_kernel::Point_2(z[i].p.x, z[i].p.y), i);
+    cdt.insert(pts.begin(), pts.end());
+  }
+  std::vector<madd_cdt::Vertex_handle> handle(z.size());
+  for (auto v : cdt.finite_vertex_handles())
+    handle[v->info()] = v;
+  for (std::uint32_t i = 0; i < z.size(); ++i)
+    PDD_ASSERT(handle[i] != madd_cdt::Vertex_handle());
+  for (std::uint32_t i = 0; i < z.size(); ++i)
+    cdt.insert_constraint(handle[i], handle[z[i].next]);
+
+  // --- condition (ii): bisect encroached pieces.
+  std::deque<std::uint32_t> queue;
+  for (std::uint32_t i = 0; i < z.size(); ++i)
+    queue.push_back(i);
+  auto push_constrained_around = [&](madd_cdt::Vertex_handle vh) {
+    auto fc = cdt.incident_faces(vh), done = fc;
+    do {
+      const int i = fc->index(vh);
+      if (fc->is_constrained(i)) {
+        const std::uint32_t x = fc->vertex(madd_cdt::ccw(i))->info();
+        const std::uint32_t y = fc->vertex(madd_cdt::cw(i))->info();
+        if (z[x].next == y) queue.push_back(x);
+        else if (z[y].next == x) queue.push_back(y);
+      }
+    } while (++fc != done);
+  };
+  while (!queue.empty()) {
+    const std::uint32_t u = queue.front();
+    queue.pop_front();
+    const std::uint32_t w = z[u].next;
+    madd_cdt::Face_handle f;
+    int fi = 0;
+    if (!cdt.is_edge(handle[u], handle[w], f, fi)) continue; // already split
+    if (std::max(z[u].depth, z[w].depth) >= max_encroachment_depth) continue;
+    const auto pu = handle[u]->point(), pw = handle[w]->point();
+    bool encroached = false;
+    for (int side = 0; side < 2 && !encroached; ++side) {
+      const auto g = side == 0 ? f : f->neighbor(fi);
+      const int gi = side == 0 ? fi : g->index(f);
+      const auto apex = g->vertex(gi);
+      if (cdt.is_infinite(apex)) continue;
+      encroached = CGAL::side_of_bounded_circle(pu, pw, apex->point()) == CGAL::ON_BOUNDED_SIDE;
+    }
+    if (!encroached) continue;
+    madd_zvertex m;
+    m.p = canonical_midpoint(z[u].p, z[w].p);
+    m.loop = z[u].loop;
+    m.edge = z[u].edge;
+    m.original = false;
+    m.depth = static_cast<std::uint8_t>(std::max(z[u].depth, z[w].depth) + 1);
+    m.t = 0.5 * (z_edge_param(r, tr, u, u) + z_edge_param(r, tr, u, w));
+    const madd_loop& lp = r.loops[m.loop];
+    m.marker = lp.tags[m.edge].external ? lp.tags[m.edge].marker : 0;
+    m.far_prev = lp.points[m.edge];
+    m.far_next = lp.points[(m.edge + 1) % lp.size()];
+    m.prev = u;
+    m.next = w;
+    const auto k = static_cast<std::uint32_t>(z.size());
+    z.push_back(m);
+    z[u].next = k;
+    z[w].prev = k;
+    cdt.remove_constrained_edge(f, fi);
+    const auto before = cdt.number_of_vertices();
+    const auto vh = cdt.insert(madd_kernel::Point_2(m.p.x, m.p.y), handle[u]->face());
+    PDD_ASSERT(cdt.number_of_vertices() == before + 1); // a new vertex, not an old one
+    vh->info() = k;
+    handle.push_back(vh);
+    cdt.insert_constraint(handle[u], vh);
+    cdt.insert_constraint(vh, handle[w]);
+    ++tr.encroachment_splits;
+    queue.push_back(u);
+    queue.push_back(k);
+    push_constrained_around(vh);
+  }
+
+  // --- faces inside the region: flood fill from the infinite face, crossing a constrained
+  // edge enters one level deeper; the region is at odd levels.
+  for (auto f : cdt.all_face_handles())
+    f->info() = -1;
+  {
+    std::vector<madd_cdt::Face_handle> border{cdt.infinite_face()}, next_border;
+    int level = 0;
+    while (!border.empty()) {
+      next_border.clear();
+      for (auto start : border) {
+        if (start->info() != -1) continue;
+        std::vector<madd_cdt::Face_handle> stack{start};
+        start->info() = level;
+        while (!stack.empty()) {
+          auto f = stack.back();
+          stack.pop_back();
+          for (int i = 0; i < 3; ++i) {
+            auto n = f->neighbor(i);
+            if (n->info() != -1) continue;
+            if (f->is_constrained(i)) {
+              next_border.push_back(n);
+            } else {
+              n->info() = level;
+              stack.push_back(n);
+            }
+          }
+        }
+      }
+      std::swap(border, next_border);
+      ++level;
+    }
+  }
+  std::vector<madd_cdt::Face_handle> inside;
+  for (auto f : cdt.finite_face_handles())
+    if (f->info() % 2 == 1) inside.push_back(f);
+  for (auto f : cdt.all_face_handles())
+    f->info() = -1;
+  for (std::size_t i = 0; i < inside.size(); ++i)
+    inside[i]->info() = static_cast<int>(i);
+  tr.faces.resize(inside.size());
+  for (std::size_t i = 0; i < inside.size(); ++i) {
+    const auto f = inside[i];
+    madd_face& mf = tr.faces[i];
+    for (int k = 0; k < 3; ++k) {
+      mf.v[k] = f->vertex(k)->info();
+      if (f->is_constrained(k)) {
+        mf.nb[k] = -1;
+      } else {
+        mf.nb[k] = f->neighbor(k)->info();
+        PDD_ASSERT(mf.nb[k] >= 0);
+      }
+    }
+    for (int k = 0; k < 3; ++k)
+      if (mf.nb[k] < 0) PDD_ASSERT(z[mf.v[(k + 1) % 3]].next == mf.v[(k + 2) % 3]);
+  }
+  return tr;
+}
+
+} // namespace pdd::detail

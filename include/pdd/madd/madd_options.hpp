@@ -1,0 +1,85 @@
+/// \file madd_options.hpp
+/// pdd::madd_options and pdd::decomposition_statistics: the options and the measurements of
+/// the Medial Axis Domain Decomposition (dissertation ch. 3-5).
+#pragma once
+
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace pdd {
+
+/// How the boundary refinement length of a split is chosen (dissertation 4.1).
+enum class madd_refinement_scale {
+  /// Per subdomain: h = 4 A / (P r) for a subdomain of area A and perimeter P (h is a quarter
+  /// of a square's side for r = 4, about half the width of a thin strip). Large subdomains,
+  /// whose input segments are fine already, are not over-refined, and the leaves get the
+  /// sqrt(N) scaling of 4.1 automatically (their size is sqrt(A/N)).
+  subdomain,
+  /// The dissertation's static MADD: h = L_a / (r sqrt N) for every split, L_a the average
+  /// input segment length.
+  global
+};
+
+/// Options of pdd::decompose (designated initialisers welcome).
+struct madd_options {
+  /// N: the number of subdomains (exactly), unless max_subdomain_area is finite.
+  std::size_t subdomains = 2;
+  /// Phi0 (degrees, in (0, 90)): every angle a separator forms with the boundary or with
+  /// another separator is >= Phi0 (criterion C1; 60 for Ruppert-type meshers).
+  double min_separator_angle_deg = 60.0;
+  /// 1: the first MADD algorithm (3.4, Algorithms 3.1-3.3: separators through circumcentres
+  /// of junction triangles only); 2: the second (3.5, Algorithms 3.4-3.6: Delaunay edges
+  /// with good angles as well).
+  int algorithm = 2;
+  /// When finite: split (largest first) until every subdomain's area is at most this;
+  /// `subdomains` is then ignored (3.7).
+  double max_subdomain_area = std::numeric_limits<double>::infinity();
+  /// r: the refinement factor (4.1), > 0; see madd_refinement_scale.
+  double refinement_factor = 4.0;
+  madd_refinement_scale refinement_scale = madd_refinement_scale::subdomain;
+  /// Dynamic MADD (4.1): a split that finds no separator is retried with the boundary
+  /// refined for r, 2r, 4r, ...: at most this many levels (>= 1).
+  int max_refinement_levels = 8;
+  /// A boundary piece is bisected at most this many times for empty diametral circles
+  /// (condition (ii) of 3.2; bounded because small input angles cascade).
+  int max_encroachment_depth = 8;
+  /// Separator smoothing (4.2): angle-quality and conformity weights before the partition,
+  /// local search after it.
+  bool smoothing = true;
+  /// L_b: a split whose larger child exceeds this fraction of the area is retried with more
+  /// refinement (at most two more levels, the best is kept); the smoothing's bound too.
+  double imbalance_bound = 0.75;
+  /// The balance bound given to the graph partitioner (bisection_options).
+  double max_part_fraction = 0.55;
+  /// Worker threads for the concurrent splits (4.3); 0: all. The result does not depend on it.
+  unsigned threads = 0;
+};
+
+/// Measurements of one decomposition (dissertation 5.2's quantities).
+struct decomposition_statistics {
+  std::size_t subdomains = 0;
+  /// Smallest angle formed by a separator with the boundary or with another separator
+  /// (degrees; 180 when there is no separator).
+  double min_separator_angle_deg = 180.0;
+  double separator_length_total = 0.0;
+  /// Per subdomain: the length of its interface edges.
+  std::vector<double> separator_length_per_subdomain;
+  double max_area_over_mean = 0.0;
+  double min_area_over_mean = 0.0;
+  /// Shortest interface edge divided by sqrt(mean subdomain area) (the "small segments" of
+  /// 4.2; 0 when there is no interface).
+  double min_interface_edge_rel = 0.0;
+  double time_s = 0.0;
+  std::size_t splits = 0;          ///< successful 2-way splits
+  std::size_t rounds = 0;          ///< rounds of concurrent splits
+  std::size_t failed_splits = 0;   ///< subdomains found unsplittable
+  std::size_t repairs = 0;         ///< repartitions (5.1)
+  std::size_t smoothing_moves = 0; ///< nodes moved by the local search (4.2)
+  std::size_t boundary_points = 0; ///< |Z| summed over the successful splits
+  std::size_t levels_tried = 0;    ///< refinement levels tried, summed over all splits
+  /// splits_per_level[l]: successful splits that used refinement level l (r 2^l).
+  std::vector<std::size_t> splits_per_level;
+};
+
+} // namespace pdd
