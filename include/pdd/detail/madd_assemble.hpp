@@ -92,9 +92,8 @@ inline void apply_edge_splits(std::vector<madd_region>& regions, std::vector<mad
       for (std::uint32_t j = i + 2; j < gp.size(); ++j)
         entries.push_back({std::min(gp[i].p, gp[j].p), std::max(gp[i].p, gp[j].p), gi, i, j});
   }
-  std::sort(entries.begin(), entries.end(), [](const entry& x, const entry& y) {
-    return std::tie(x.a, x.b) < std::tie(y.a, y.b);
-  });
+  std::sort(entries.begin(), entries.end(),
+            [](const entry& x, const entry& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
   auto find = [&](point x, point y) -> const entry* {
     const point a = std::min(x, y), b = std::max(x, y);
     auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(a, b),
@@ -172,8 +171,8 @@ inline decomposition assemble_decomposition(const std::vector<madd_region>& regi
         tl.v.push_back(id_of(l.points[i]));
         tl.t.push_back(l.tags[i]);
       }
-      const auto s = static_cast<std::size_t>(std::min_element(tl.v.begin(), tl.v.end()) -
-                                              tl.v.begin());
+      const auto s =
+          static_cast<std::size_t>(std::min_element(tl.v.begin(), tl.v.end()) - tl.v.begin());
       std::rotate(tl.v.begin(), tl.v.begin() + s, tl.v.end());
       std::rotate(tl.t.begin(), tl.t.begin() + s, tl.t.end());
       loops.push_back(std::move(tl));
@@ -206,8 +205,8 @@ inline decomposition assemble_decomposition(const std::vector<madd_region>& regi
   for (std::size_t k = 0; k < ie.size(); k += 2) {
     const iedge& x = ie[k];
     const iedge& y = ie[k + 1];
-    if (x.u != y.u || x.w != y.w || x.s == y.s || (k + 2 < ie.size() && ie[k + 2].u == x.u &&
-                                                   ie[k + 2].w == x.w))
+    if (x.u != y.u || x.w != y.w || x.s == y.s ||
+        (k + 2 < ie.size() && ie[k + 2].u == x.u && ie[k + 2].w == x.w))
       throw internal_error("MADD: interface edge (" + std::to_string(x.u) + ", " +
                            std::to_string(x.w) + ") is not shared by exactly two subdomains");
     pair_edges[{x.s, y.s}].emplace_back(x.u, x.w);

@@ -113,8 +113,8 @@ struct madd_cell {
 /// A cell face: a candidate piece of separator between cells a and b.
 struct madd_cell_face {
   std::uint32_t a = 0, b = 0;
-  std::uint32_t z0 = 0;        ///< its end on the boundary (a vertex of Z)
-  std::uint32_t z1 = no_index; ///< Delaunay edge: the other end; else no_index
+  std::uint32_t z0 = 0;         ///< its end on the boundary (a vertex of Z)
+  std::uint32_t z1 = no_index;  ///< Delaunay edge: the other end; else no_index
   std::uint32_t tri = no_index; ///< circumcentre segment: the junction triangle
   double length = 0.0;
   double min_angle = 0.0; ///< smallest angle it forms with the boundary (degrees)
@@ -124,7 +124,7 @@ struct madd_cell_face {
 
 /// The cells, faces and their contraction for one region.
 struct madd_graph {
-  std::vector<junction_info> info; ///< per triangle
+  std::vector<junction_info> info;       ///< per triangle
   std::vector<std::uint32_t> first_cell; ///< per triangle
   std::vector<madd_cell> cells;
   std::vector<madd_cell_face> faces;
@@ -272,8 +272,10 @@ inline madd_graph build_madd_graph(const madd_triangulation& tr, const madd_grap
         // (segments b and k), contracting b leaves pair b (segments k and a).
         const double keep_a = j.pair_ok[a] ? j.pair_score[a] : -1.0;
         const double keep_b = j.pair_ok[b] ? j.pair_score[b] : -1.0;
-        if (keep_a >= keep_b) cut[a] = false;
-        else cut[b] = false;
+        if (keep_a >= keep_b)
+          cut[a] = false;
+        else
+          cut[b] = false;
       }
     }
     const std::uint32_t base = g.first_cell[t];
@@ -314,9 +316,8 @@ inline partition_graph contracted_graph(const madd_graph& g) {
     if (v < u) std::swap(u, v);
     es.push_back({u, v, f.weight});
   }
-  std::sort(es.begin(), es.end(), [](const e& x, const e& y) {
-    return x.u != y.u ? x.u < y.u : x.v < y.v;
-  });
+  std::sort(es.begin(), es.end(),
+            [](const e& x, const e& y) { return x.u != y.u ? x.u < y.u : x.v < y.v; });
   for (std::size_t i = 0; i < es.size();) {
     double w = 0.0;
     std::size_t k = i;

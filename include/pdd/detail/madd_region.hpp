@@ -49,10 +49,10 @@ struct madd_region {
 /// A vertex that a split kept on an edge of its region (a separator ends there). Every region
 /// that has the edge (lo, hi) must get m as well (madd_registry).
 struct madd_edge_split {
-  point lo, hi;    ///< the region edge, canonical orientation (lo < hi)
-  double t = 0.0;  ///< dyadic parameter of m on lo -> hi (0 < t < 1, exact)
-  point m;         ///< the vertex
-  int marker = 0;  ///< its marker (the segment's marker on external edges, else 0)
+  point lo, hi;   ///< the region edge, canonical orientation (lo < hi)
+  double t = 0.0; ///< dyadic parameter of m on lo -> hi (0 < t < 1, exact)
+  point m;        ///< the vertex
+  int marker = 0; ///< its marker (the segment's marker on external edges, else 0)
 };
 
 /// The midpoint of segment pq computed from its canonical orientation: bitwise identical for
@@ -63,7 +63,9 @@ inline point canonical_midpoint(point p, point q) noexcept {
 }
 
 /// Euclidean distance.
-inline double distance(point a, point b) noexcept { return std::hypot(b.x - a.x, b.y - a.y); }
+inline double distance(point a, point b) noexcept {
+  return std::hypot(b.x - a.x, b.y - a.y);
+}
 
 /// The angle at v between the rays v->a and v->b, in degrees, in [0, 180].
 inline double angle_deg(point v, point a, point b) noexcept {

@@ -32,11 +32,11 @@ namespace pdd::detail {
 /// Options of one split.
 struct madd_split_options {
   madd_graph_options graph;
-  double target_length = 1.0;     ///< h at refinement level 0
-  int max_levels = 8;             ///< levels h, h/2, h/4, ...
-  int extra_levels = 2;           ///< levels tried after a first valid but unbalanced split
+  double target_length = 1.0; ///< h at refinement level 0
+  int max_levels = 8;         ///< levels h, h/2, h/4, ...
+  int extra_levels = 2;       ///< levels tried after a first valid but unbalanced split
   int max_encroachment_depth = 8;
-  double imbalance_bound = 0.75;  ///< L_b: largest child area / region area accepted at once
+  double imbalance_bound = 0.75;   ///< L_b: largest child area / region area accepted at once
   double max_part_fraction = 0.55; ///< given to the partitioner
   int max_repairs = 64;
   std::uint64_t seed = 1;
@@ -49,9 +49,9 @@ struct madd_split_result {
   std::vector<madd_edge_split> kept; ///< refinement vertices that separators end at
   int level = -1;
   double separator_length = 0.0;
-  double min_angle = 180.0;     ///< smallest angle the separator forms (degrees)
-  double max_fraction = 1.0;    ///< largest child area / region area
-  std::size_t z_points = 0;     ///< |Z| at the level used
+  double min_angle = 180.0;  ///< smallest angle the separator forms (degrees)
+  double max_fraction = 1.0; ///< largest child area / region area
+  std::size_t z_points = 0;  ///< |Z| at the level used
   std::size_t junctions = 0;
   std::size_t graph_nodes = 0;
   std::size_t repairs = 0;
@@ -279,8 +279,8 @@ inline void separator_measures(const madd_triangulation& tr, const madd_graph& g
       first_cut[f.tri] = static_cast<int>(i);
     } else {
       const madd_cell_face& h = g.faces[first_cut[f.tri]];
-      out.min_angle = std::min(
-          out.min_angle, angle_deg(g.info[f.tri].c, tr.z[f.z0].p, tr.z[h.z0].p));
+      out.min_angle =
+          std::min(out.min_angle, angle_deg(g.info[f.tri].c, tr.z[f.z0].p, tr.z[h.z0].p));
     }
   }
 }
@@ -297,7 +297,8 @@ bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_grap
     }
     const partition_graph pg = contracted_graph(g);
     std::vector<std::uint8_t> np = connected_bisection(pg, partitioner, bo);
-    if (o.graph.smoothing) out.smoothing_moves += smooth_bisection(tr, g, pg, np, o.imbalance_bound);
+    if (o.graph.smoothing)
+      out.smoothing_moves += smooth_bisection(tr, g, pg, np, o.imbalance_bound);
     const std::vector<std::uint8_t> part = cell_parts(g, np);
     const std::vector<std::uint32_t> bad = pinch_vertices(tr, g, part);
     if (bad.empty()) {
@@ -357,7 +358,8 @@ madd_split_result split_region(const madd_region& r, const madd_split_options& o
       continue;
     }
     if (!bisect_region(r, tr, g, o, partitioner, cur)) {
-      if (!best.ok) best.failure = cur.failure + " (refinement level " + std::to_string(level) + ")";
+      if (!best.ok)
+        best.failure = cur.failure + " (refinement level " + std::to_string(level) + ")";
       continue;
     }
     cur.ok = true;

@@ -65,11 +65,9 @@ using madd_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using madd_cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, madd_kernel>;
 using madd_cdt_fb = CGAL::Constrained_triangulation_face_base_2<
     madd_kernel, CGAL::Triangulation_face_base_with_info_2<int, madd_kernel>>;
-using madd_cdt =
-    CGAL::Constrained_Delaunay_triangulation_2<madd_kernel,
-                                               CGAL::Triangulation_data_structure_2<madd_cdt_vb,
-                                                                                    madd_cdt_fb>,
-                                               CGAL::Exact_predicates_tag>;
+using madd_cdt = CGAL::Constrained_Delaunay_triangulation_2<
+    madd_kernel, CGAL::Triangulation_data_structure_2<madd_cdt_vb, madd_cdt_fb>,
+    CGAL::Exact_predicates_tag>;
 
 /// Parameter (canonical orientation of the region edge) of Z vertex w seen from the edge
 /// that starts at or contains Z vertex u (w == u or w == z[u].next).
@@ -186,8 +184,10 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
       if (fc->is_constrained(i)) {
         const std::uint32_t x = fc->vertex(madd_cdt::ccw(i))->info();
         const std::uint32_t y = fc->vertex(madd_cdt::cw(i))->info();
-        if (z[x].next == y) queue.push_back(x);
-        else if (z[y].next == x) queue.push_back(y);
+        if (z[x].next == y)
+          queue.push_back(x);
+        else if (z[y].next == x)
+          queue.push_back(y);
       }
     } while (++fc != done);
   };

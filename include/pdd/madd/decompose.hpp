@@ -11,8 +11,8 @@
 #include <pdd/errors.hpp>
 #include <pdd/geometry/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
-#include <pdd/madd/madd_options.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
+#include <pdd/madd/madd_options.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 
 #include <tbb/parallel_for.h>
@@ -133,9 +133,9 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
                         " (reached " + std::to_string(regions.size()) + ")";
       for (std::size_t i = 0; i < regions.size(); ++i)
         if (final_region[i] && (!by_area || regions[i].area > o.max_subdomain_area))
-          msg += "; subdomain " + std::to_string(i) + " (area " +
-                 std::to_string(regions[i].area) + ", " +
-                 std::to_string(detail::region_vertex_count(regions[i])) + " vertices): " + why[i];
+          msg += "; subdomain " + std::to_string(i) + " (area " + std::to_string(regions[i].area) +
+                 ", " + std::to_string(detail::region_vertex_count(regions[i])) +
+                 " vertices): " + why[i];
       throw decomposition_error(msg);
     }
     if (!by_area) order.resize(std::min(order.size(), o.subdomains - regions.size()));

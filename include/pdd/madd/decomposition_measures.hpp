@@ -47,10 +47,10 @@ inline void measure_decomposition(const decomposition& d, decomposition_statisti
           emin = std::min(emin, len);
         }
         if (out_if || in_if)
-          st.min_separator_angle_deg = std::min(
-              st.min_separator_angle_deg,
-              detail::interior_angle_deg(d.vertices[loop[(i + m - 1) % m]], v,
-                                         d.vertices[loop[(i + 1) % m]]));
+          st.min_separator_angle_deg =
+              std::min(st.min_separator_angle_deg,
+                       detail::interior_angle_deg(d.vertices[loop[(i + m - 1) % m]], v,
+                                                  d.vertices[loop[(i + 1) % m]]));
       }
     }
   }

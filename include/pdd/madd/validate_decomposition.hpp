@@ -11,8 +11,8 @@
 #include <pdd/madd/decomposition.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cmath>
@@ -119,13 +119,15 @@ inline void check_subdomain_loops(const decomposition& d, std::size_t s,
   for (std::size_t l = 0; l < polys.size(); ++l) {
     const auto o = CGAL::orientation_2(polys[l].begin(), polys[l].end(), K());
     if (o != (l == 0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE))
-      problems.push_back(name + ": loop " + std::to_string(l) +
-                         (l == 0 ? " (outer) is not counter-clockwise" : " (hole) is not clockwise"));
+      problems.push_back(
+          name + ": loop " + std::to_string(l) +
+          (l == 0 ? " (outer) is not counter-clockwise" : " (hole) is not clockwise"));
   }
   for (std::size_t h = 1; h < polys.size(); ++h) {
     const auto& q = polys[h][0];
     if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), q, K()) != CGAL::ON_BOUNDED_SIDE)
-      problems.push_back(name + ": hole loop " + std::to_string(h) + " is not inside the outer loop");
+      problems.push_back(name + ": hole loop " + std::to_string(h) +
+                         " is not inside the outer loop");
     for (std::size_t k = 1; k < polys.size(); ++k)
       if (k != h &&
           CGAL::bounded_side_2(polys[k].begin(), polys[k].end(), q, K()) != CGAL::ON_UNBOUNDED_SIDE)
@@ -182,7 +184,8 @@ inline decomposition_report validate_decomposition(const decomposition& d, const
     }
     std::sort(all.begin(), all.end());
     if (std::adjacent_find(all.begin(), all.end()) != all.end())
-      pr.push_back(name + ": vertex " + std::to_string(*std::adjacent_find(all.begin(), all.end())) +
+      pr.push_back(name + ": vertex " +
+                   std::to_string(*std::adjacent_find(all.begin(), all.end())) +
                    " occurs twice (the subdomain touches itself)");
     detail::check_subdomain_loops(d, s, pr);
     detail::check_subdomain_simple(d, s, pr);
@@ -196,8 +199,9 @@ inline decomposition_report validate_decomposition(const decomposition& d, const
         const index_t a = loop[i], b = loop[(i + 1) % m];
         const edge_tag& t = sd.tags[l][i];
         edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<index_t>(s), a, b, t});
-        const bool touches_interface = t.type == edge_tag::kind::interface ||
-                                       sd.tags[l][(i + m - 1) % m].type == edge_tag::kind::interface;
+        const bool touches_interface =
+            t.type == edge_tag::kind::interface ||
+            sd.tags[l][(i + m - 1) % m].type == edge_tag::kind::interface;
         if (touches_interface) {
           const double ang = detail::interior_angle_deg(d.vertices[loop[(i + m - 1) % m]],
                                                         d.vertices[a], d.vertices[b]);
@@ -217,8 +221,8 @@ inline decomposition_report validate_decomposition(const decomposition& d, const
   // Edges: external once on their segment, interfaces twice with matching tags.
   for (const auto& [key, list] : edges) {
     if (pr.size() >= o.max_problems) break;
-    const std::string ename = "edge (" + std::to_string(key.first) + ", " +
-                              std::to_string(key.second) + ")";
+    const std::string ename =
+        "edge (" + std::to_string(key.first) + ", " + std::to_string(key.second) + ")";
     const occ& x = list[0];
     if (x.tag.type == edge_tag::kind::external) {
       if (list.size() != 1) {
@@ -254,8 +258,7 @@ inline decomposition_report validate_decomposition(const decomposition& d, const
         x.tag.id != y.tag.id || x.tag.neighbour != y.s || y.tag.neighbour != x.s)
       pr.push_back(ename + ": its two sides (subdomains " + std::to_string(x.s) + ", " +
                    std::to_string(y.s) + ") do not match (direction, interface id, neighbour)");
-    else if (x.tag.id >= d.interfaces.size() ||
-             d.interfaces[x.tag.id].a != std::min(x.s, y.s) ||
+    else if (x.tag.id >= d.interfaces.size() || d.interfaces[x.tag.id].a != std::min(x.s, y.s) ||
              d.interfaces[x.tag.id].b != std::max(x.s, y.s))
       pr.push_back(ename + ": interface " + std::to_string(x.tag.id) +
                    " does not exist or joins other subdomains");
