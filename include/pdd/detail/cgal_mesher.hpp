@@ -4,6 +4,7 @@
 /// the extraction of the result.
 #pragma once
 
+#include <pdd/detail/cgal_mesher_faces.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/pslg.hpp>
 #include <pdd/mesh/triangle_mesh.hpp>
@@ -15,7 +16,6 @@
 #include <CGAL/Mesh_2/Refine_edges.h>
 #include <CGAL/Mesh_2/Refine_edges_visitor.h>
 #include <CGAL/Mesh_2/Refine_edges_with_clusters.h>
-#include <CGAL/Mesh_2/Refine_faces.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -260,22 +260,23 @@ inline std::vector<vertex_handle> build_cdt(cdt& tr, const pslg& d) {
 }
 
 /// CGAL's Delaunay_mesher_2 assembled from its levels, with domain_edges_base as the edge
-/// level, started on a triangulation whose in_domain marks are already set.
+/// level and faces_level (a heap-based bad-face queue) as the face level, started on a
+/// triangulation whose in_domain marks are already set.
 template <class Criteria>
 void refine(cdt& tr, Criteria& criteria) {
   using edges_level =
       CGAL::Mesh_2::Refine_edges_with_clusters<cdt, domain_gabriel<cdt>, domain_edges_base<cdt>>;
-  using faces_level = CGAL::Mesh_2::Refine_faces<cdt, Criteria, edges_level>;
+  using faces = faces_level<cdt, Criteria, edges_level>;
   CGAL::Null_mesher_level null_level;
   CGAL::Null_mesh_visitor null_visitor;
   CGAL::Mesh_2::Clusters<cdt> clusters(tr);
   edges_level edges(tr, clusters, null_level);
-  faces_level faces(tr, criteria, edges);
-  CGAL::Mesh_2::Refine_edges_visitor_from_faces<faces_level> visitor(faces, edges, null_visitor);
+  faces face_level(tr, criteria, edges);
+  CGAL::Mesh_2::Refine_edges_visitor_from_faces<faces> visitor(face_level, edges, null_visitor);
   clusters.create_clusters();
   edges.scan_triangulation();
-  faces.scan_triangulation();
-  faces.refine(visitor);
+  face_level.scan_triangulation();
+  face_level.refine(visitor);
 }
 
 /// Finds the index of the input segment with endpoints {a, b} (sorted table lookup).

@@ -52,6 +52,14 @@ public:
     return std::min(max_area_, static_cast<double>(sizing_->area_at(p)));
   }
 
+  /// The queue priority of a bad face (smaller first), in the order of face_quality::operator<:
+  /// -size for a face over its area bound, else sin^2 of its smallest angle.
+  static double priority(const Quality& q) noexcept { return q.size > 1.0 ? -q.size : q.sine; }
+  /// The badness of a bad face from its priority.
+  static CGAL::Mesh_2::Face_badness badness_of_priority(double key) noexcept {
+    return key < 0.0 ? CGAL::Mesh_2::IMPERATIVELY_BAD : CGAL::Mesh_2::BAD;
+  }
+
   /// CGAL's functor: classifies a face and fills its quality.
   class Is_bad {
   public:

@@ -1,0 +1,172 @@
+/// \file cgal_mesher_faces.hpp
+/// The face level of pdd::cgal::mesher: CGAL Mesh_2's Refine_faces with the bad-face queue
+/// replaced by a binary heap with lazy deletion.
+///
+/// CGAL 5.5 keeps bad faces in a Double_map (a Boost bimap ordered by quality and by the
+/// faces' point coordinates) and erases every face of every conflict zone from it: that took
+/// about two thirds of the meshing time. Here a face is pushed once, when it is created (or at
+/// the initial scan), with a copy of its vertex handles; entries whose face has since been
+/// destroyed are skipped when they reach the top. A destroyed face is recognised because both
+/// refinement levels clear the in_domain mark of every face of a conflict zone before the
+/// zone is re-triangulated (and Compact_container keeps the memory of erased faces), and a
+/// reused face slot is recognised by its vertices; a slot reused for the same three vertices
+/// is the same triangle, with the same quality, so its entry stays valid.
+/// Ties in quality are broken by insertion order, so the refinement order is deterministic.
+#pragma once
+
+#include <CGAL/Mesh_2/Face_badness.h>
+#include <CGAL/Mesher_level.h>
+#include <CGAL/Mesher_level_default_implementations.h>
+#include <CGAL/Meshes/Triangulation_mesher_level_traits_2.h>
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <iterator>
+#include <vector>
+
+namespace pdd::detail::cgal_mesh {
+
+template <class Tr, class Criteria, class Previous>
+class faces_base : public CGAL::Triangulation_mesher_level_traits_2<Tr>,
+                   public CGAL::No_test_point_conflict,
+                   public CGAL::No_after_no_insertion {
+  using traits = CGAL::Triangulation_mesher_level_traits_2<Tr>;
+  using Face_handle = typename Tr::Face_handle;
+  using Vertex_handle = typename Tr::Vertex_handle;
+  using Point = typename Tr::Point;
+  using Quality = typename Criteria::Quality;
+
+public:
+  using Zone = typename traits::Zone;
+  using traits::triangulation_ref_impl;
+
+  faces_base(Tr& t, Criteria& c, Previous& p) : traits(t), criteria_(c), previous_(p) {}
+
+  /// Queues every bad face of the domain.
+  void scan_triangulation_impl() {
+    heap_.clear();
+    Tr& t = triangulation_ref_impl();
+    heap_.reserve(t.number_of_faces());
+    for (auto f = t.finite_faces_begin(); f != t.finite_faces_end(); ++f)
+      if (f->is_in_domain()) push_if_bad(f);
+  }
+
+  Zone conflicts_zone_impl(const Point& p, Face_handle fh) {
+    Zone zone;
+    Tr& t = triangulation_ref_impl();
+    zone.fh = t.locate(p, zone.locate_type, zone.i, fh);
+    zone.parent_face = fh;
+    t.get_conflicts_and_boundary(p, std::back_inserter(zone.faces),
+                                 std::back_inserter(zone.boundary_edges), fh);
+    return zone;
+  }
+
+  bool no_longer_element_to_refine_impl() {
+    drop_stale();
+    return heap_.empty();
+  }
+
+  Face_handle get_next_element_impl() {
+    drop_stale();
+    current_badness_ = Criteria::badness_of_priority(heap_.front().key);
+    return heap_.front().f;
+  }
+
+  void pop_next_element_impl() {
+    std::pop_heap(heap_.begin(), heap_.end(), after);
+    heap_.pop_back();
+  }
+
+  Point refinement_point_impl(const Face_handle& f) const {
+    return triangulation_ref_impl().circumcenter(f);
+  }
+
+  void before_conflicts_impl(const Face_handle&, const Point&) {
+    previous_.set_imperative_refinement(current_badness_ == CGAL::Mesh_2::IMPERATIVELY_BAD);
+  }
+
+  /// The faces of the zone are about to be destroyed: clear their marks (their queue entries
+  /// become stale).
+  void before_insertion_impl(const Face_handle&, const Point&, Zone& zone) {
+    for (const Face_handle& f : zone.faces)
+      f->set_in_domain(false);
+  }
+
+  void after_insertion_impl(const Vertex_handle& v) {
+    auto fc = triangulation_ref_impl().incident_faces(v);
+    const auto begin = fc;
+    do {
+      fc->set_in_domain(true);
+    } while (++fc != begin);
+    compute_new_bad_faces(v);
+  }
+
+  /// Queues the bad faces of the domain around v (called by CGAL's edge-level visitor too).
+  void compute_new_bad_faces(const Vertex_handle& v) {
+    Tr& t = triangulation_ref_impl();
+    auto fc = t.incident_faces(v);
+    const auto begin = fc;
+    do {
+      if (!t.is_infinite(fc) && fc->is_in_domain()) push_if_bad(fc);
+    } while (++fc != begin);
+  }
+
+  CGAL::Mesh_2::Face_badness is_bad(const Quality& q) const { return criteria_.is_bad_object()(q); }
+
+private:
+  struct entry {
+    double key; ///< Criteria::priority: smaller is refined first
+    std::uint64_t seq;
+    Face_handle f;
+    std::array<Vertex_handle, 3> v;
+  };
+  /// Heap order: x comes after y (y is refined first).
+  static bool after(const entry& x, const entry& y) {
+    return x.key != y.key ? x.key > y.key : x.seq > y.seq;
+  }
+
+  void push_if_bad(const Face_handle& f) {
+    Quality q;
+    if (criteria_.is_bad_object()(f, q) == CGAL::Mesh_2::NOT_BAD) return;
+    heap_.push_back({Criteria::priority(q), seq_++, f, {f->vertex(0), f->vertex(1), f->vertex(2)}});
+    std::push_heap(heap_.begin(), heap_.end(), after);
+  }
+
+  static bool stale(const entry& e) {
+    return !e.f->is_in_domain() || e.f->vertex(0) != e.v[0] || e.f->vertex(1) != e.v[1] ||
+           e.f->vertex(2) != e.v[2];
+  }
+
+  void drop_stale() {
+    while (!heap_.empty() && stale(heap_.front()))
+      pop_next_element_impl();
+  }
+
+  Criteria& criteria_;
+  Previous& previous_;
+  std::vector<entry> heap_;
+  std::uint64_t seq_ = 0;
+  CGAL::Mesh_2::Face_badness current_badness_ = CGAL::Mesh_2::NOT_BAD;
+};
+
+/// The face level: faces_base plus CGAL's Mesher_level driver.
+template <class Tr, class Criteria, class Previous>
+class faces_level
+    : public faces_base<Tr, Criteria, Previous>,
+      public CGAL::Mesher_level<Tr, faces_level<Tr, Criteria, Previous>, typename Tr::Face_handle,
+                                Previous, CGAL::Triangulation_mesher_level_traits_2<Tr>> {
+  using base = faces_base<Tr, Criteria, Previous>;
+  using mesher = CGAL::Mesher_level<Tr, faces_level, typename Tr::Face_handle, Previous,
+                                    CGAL::Triangulation_mesher_level_traits_2<Tr>>;
+
+public:
+  using Triangulation = Tr;
+  using Previous_level = Previous;
+  using Zone = typename base::Zone;
+  using base::triangulation_ref_impl;
+
+  faces_level(Tr& t, Criteria& c, Previous& p) : base(t, c, p), mesher(p) {}
+};
+
+} // namespace pdd::detail::cgal_mesh
