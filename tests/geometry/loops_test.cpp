@@ -191,6 +191,21 @@ TEST(Loops, RejectsDuplicateSegmentsAndVertices) {
   expect_geometry_error(h, "duplicate vertices 0 and 4", {0, 4});
 }
 
+TEST(Loops, IntersectingSegmentsThrowGeometryError) {
+  const std::vector<std::vector<std::vector<point>>> cases{
+      {square(0, 0, 10), {{8, 4}, {12, 4}, {12, 6}, {8, 6}}}, // crossing
+      {square(0, 0, 10), {{2, 0}, {4, 0}, {4, 2}, {2, 2}}},   // overlapping
+      {square(0, 0, 10), {{5, 10}, {4, 8}, {6, 8}}},          // touching
+      {{{0, 0}, {1, 0}, {2, 0}}},                             // collinear
+      {{{0, 0}, {2, 0}, {2, 2}, {1, -1}}}};                   // bow tie
+  for (const auto& c : cases) {
+    pdd::pslg g;
+    for (const auto& loop : c)
+      g.add_loop(loop);
+    EXPECT_THROW((void)pdd::find_loops(g), pdd::geometry_error);
+  }
+}
+
 TEST(Loops, EmptyPslgHasNoLoops) {
   EXPECT_TRUE(pdd::find_loops(pdd::pslg{}).loops.empty());
   EXPECT_EQ(pdd::domain_area(pdd::pslg{}), 0.0);

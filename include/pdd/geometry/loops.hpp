@@ -102,8 +102,9 @@ inline void flood_component(const pslg& g, const segment_incidence& inc, loop_tr
         const index_t w = f->vertex(pslg_cdt::ccw(i))->info();
         const index_t s = segment_between(g, inc, u, w);
         if (s == no_index)
-          throw geometry_error("a vertex lies on a segment between vertices " + std::to_string(u) +
-                                   " and " + std::to_string(w) + "; pdd::validate names it",
+          throw geometry_error("a vertex lies in the interior of a segment, at vertex " +
+                                   std::to_string(u) + " or " + std::to_string(w) +
+                                   "; pdd::validate names it",
                                {u, w});
         const index_t l = t.loop_of_segment[s];
         if (loops[l].depth < 0) {
