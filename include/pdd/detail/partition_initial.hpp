@@ -1,0 +1,105 @@
+/// \file partition_initial.hpp
+/// Implementation detail of pdd::boost_partitioner: the initial bisection of the coarsest
+/// graph, by breadth-first and greedy graph growing from a pseudo-peripheral vertex and from
+/// random vertices (Karypis and Kumar 1998, section 3.2, "GGP" and "GGGP"), each refined by
+/// FM, the best kept.
+#pragma once
+
+#include <pdd/detail/partition_csr.hpp>
+#include <pdd/detail/partition_exact.hpp>
+#include <pdd/detail/partition_fm.hpp>
+#include <pdd/detail/partition_traversal.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace pdd::detail {
+
+/// Part 1 := the shortest prefix of the BFS order from seed that reaches target weight (at
+/// least one vertex, at most n - 1).
+inline std::vector<std::uint8_t> bfs_bisection(const ml_graph& g, std::size_t seed, double target) {
+  const std::size_t n = boost::num_vertices(g);
+  std::vector<std::uint8_t> part(n, 0);
+  double w1 = 0.0;
+  const std::vector<std::size_t> order = breadth_first_order(g, seed, true);
+  for (std::size_t i = 0; i + 1 < n && (i == 0 || w1 < target); ++i) {
+    part[order[i]] = 1;
+    w1 += g[order[i]].weight;
+  }
+  return part;
+}
+
+/// Greedy graph growing: part 1 starts as {seed} and repeatedly takes the frontier vertex whose
+/// move raises the cut least, skipping vertices that would push it over max_weight, until it
+/// reaches target. A disconnected graph continues from its lowest vertex outside part 1.
+inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t seed, double target,
+                                                double max_weight) {
+  const std::size_t n = boost::num_vertices(g);
+  std::vector<std::uint8_t> part(n, 0);
+  std::vector<double> priority(n, 0.0); // (weight to part 1) - (weight to part 0)
+  std::vector<char> queued(n, 0);
+  for (std::size_t v = 0; v < n; ++v)
+    for (const auto e : boost::make_iterator_range(boost::out_edges(v, g)))
+      priority[v] -= g[e].weight;
+  std::set<std::pair<double, std::size_t>, fm_gain_order> frontier;
+  double w1 = 0.0;
+  std::size_t count = 0, next_outside = 0;
+  auto add = [&](std::size_t v) {
+    if (queued[v]) frontier.erase({priority[v], v});
+    part[v] = 1;
+    w1 += g[v].weight;
+    ++count;
+    for (const auto e : boost::make_iterator_range(boost::out_edges(v, g))) {
+      const std::size_t t = boost::target(e, g);
+      if (part[t]) continue;
+      if (queued[t]) frontier.erase({priority[t], t});
+      priority[t] += 2.0 * g[e].weight;
+      queued[t] = 1;
+      frontier.insert({priority[t], t});
+    }
+  };
+  add(seed);
+  while (w1 < target && count + 1 < n) {
+    std::size_t pick = n;
+    for (const auto& [p, v] : frontier)
+      if (w1 + g[v].weight <= max_weight) {
+        pick = v;
+        break;
+      }
+    while (frontier.empty() && pick == n && next_outside < n)
+      if (!part[next_outside++]) pick = next_outside - 1;
+    if (pick == n) break;
+    add(pick);
+  }
+  return part;
+}
+
+/// The best FM-refined bisection of (small) g among `tries` grown ones: try 0 grows by BFS
+/// from a pseudo-peripheral vertex, try 1 greedily from it, the others greedily from random
+/// vertices. Graphs of at most exact_bisection_max_vertices are solved exactly.
+inline std::vector<std::uint8_t> initial_bisection(const ml_graph& g, double max_weight, int tries,
+                                                   int fm_passes, std::mt19937_64& rng) {
+  const std::size_t n = boost::num_vertices(g);
+  if (n <= exact_bisection_max_vertices) return exact_bisection(g, max_weight);
+  const double target = 0.5 * total_vertex_weight(g);
+  const std::size_t peripheral = pseudo_peripheral_vertex(g, random_below(rng, n));
+  std::vector<std::uint8_t> best;
+  bisection_score best_score{};
+  for (int t = 0; t < tries; ++t) {
+    std::vector<std::uint8_t> part =
+        t == 0 ? bfs_bisection(g, peripheral, target)
+               : grow_bisection(g, t == 1 ? peripheral : random_below(rng, n), target, max_weight);
+    const bisection_score s = fm_refine(g, part, max_weight, fm_passes);
+    if (best.empty() || s < best_score) {
+      best = std::move(part);
+      best_score = s;
+    }
+  }
+  return best;
+}
+
+} // namespace pdd::detail
