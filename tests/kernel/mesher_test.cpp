@@ -3,6 +3,7 @@
 #include "test_support.hpp"
 
 #include <pdd/geometry/model_domains.hpp>
+#include <pdd/io/poly.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -327,4 +328,92 @@ TEST(CgalMesher, DegenerateInputGivesNoTriangles) {
   const auto r = pdd::cgal::mesher{}.mesh(d, {}, pdd::uniform_sizing{});
   EXPECT_TRUE(r.mesh.triangles.empty());
   EXPECT_EQ(r.mesh.vertices.size(), 2u);
+}
+
+// --- shared test geometries (../shared/data; skipped when absent) -----------------------------
+
+namespace {
+
+pdd::pslg read_shared(const std::string& name) {
+  return pdd::read_poly(pdd::test::shared_data_dir() / name);
+}
+
+double bbox_area(const pdd::pslg& d) {
+  double x0 = d.vertices[0].x, x1 = x0, y0 = d.vertices[0].y, y1 = y0;
+  for (const point& p : d.vertices) {
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+  }
+  return (x1 - x0) * (y1 - y0);
+}
+
+} // namespace
+
+TEST(CgalMesherSharedData, AirfoilMeetsEveryBound) {
+  // The only shared geometry whose smallest angle on the meshed side (113.6 deg) is >= 60.
+  if (pdd::test::shared_data_dir().empty()) GTEST_SKIP() << "../shared/data absent";
+  const auto d = read_shared("mesh2d_airfoil_3element.poly");
+  for (const double a : {std::numeric_limits<double>::infinity(), 1e-3, 1e-4}) {
+    const auto c = criteria_with_area(a);
+    const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+    expect_good_mesh(d, c, pdd::uniform_sizing{}, r, "airfoil A=" + std::to_string(a));
+  }
+  const pdd::analytic_sizing graded{[](point p) {
+    return 2e-6 + 1e-3 * ((p.x - 0.5) * (p.x - 0.5) + (p.y - 0.5) * (p.y - 0.5));
+  }};
+  const auto r = pdd::cgal::mesher{}.mesh(d, {}, graded);
+  expect_good_mesh(d, {}, graded, r, "airfoil graded");
+  EXPECT_TRUE(bitwise_equal(r, pdd::cgal::mesher{}.mesh(d, {}, graded)));
+}
+
+TEST(CgalMesherSharedData, SmallInputAnglesStillGiveValidMeshes) {
+  // Input angles below 60 deg: no quality guarantee near them, but the mesh must still be a
+  // conforming constrained Delaunay mesh of exactly the domain within the area bound.
+  if (pdd::test::shared_data_dir().empty()) GTEST_SKIP() << "../shared/data absent";
+  for (const char* name : {"triangle_A.poly", "lake_superior.poly", "bahamas_islands.poly",
+                           "texas.poly", "guitar.poly"}) {
+    const auto d = read_shared(name);
+    const auto c = criteria_with_area(bbox_area(d) / 2000);
+    const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+    const auto rep = pdd::verify(r.mesh, d, {.criteria = c});
+    SCOPED_TRACE(name);
+    EXPECT_EQ(rep.delaunay_violations, 0u);
+    EXPECT_EQ(rep.orientation_violations, 0u);
+    EXPECT_EQ(rep.missing_segments, 0u);
+    EXPECT_EQ(rep.duplicate_vertices, 0u);
+    EXPECT_EQ(rep.area_violations, 0u);
+    EXPECT_EQ(rep.nonmanifold_edges, 0u);
+    EXPECT_TRUE(rep.area_ok);
+    EXPECT_LE(rep.quality_violations, 2u); // triangles at input angles below 20.7 deg
+    EXPECT_EQ(
+        std::memcmp(r.mesh.vertices.data(), d.vertices.data(), d.vertices.size() * sizeof(point)),
+        0);
+  }
+}
+
+TEST(CgalMesherSharedData, DanglingSegmentsAndFreeVerticesAreMeshed) {
+  // face.poly has dangling segments and isolated vertices, clusters.poly a star of dangling
+  // segments: they are constraints inside the domain (both sides meshed).
+  if (pdd::test::shared_data_dir().empty()) GTEST_SKIP() << "../shared/data absent";
+  for (const char* name : {"triangle_face.poly", "cgal_clusters.poly"}) {
+    SCOPED_TRACE(name);
+    const auto d = read_shared(name);
+    const auto r =
+        pdd::cgal::mesher{}.mesh(d, criteria_with_area(bbox_area(d) / 1000), pdd::uniform_sizing{});
+    const auto edges = mesh_edges(r.mesh);
+    std::vector<index_t> split;
+    for (index_t s = 0; s < d.segments.size(); ++s)
+      if (!edges.count(std::minmax(d.segments[s].a, d.segments[s].b))) split.push_back(s);
+    EXPECT_EQ(r.split_segments, split);
+    const auto st = pdd::compute_statistics(r.mesh);
+    EXPECT_GT(st.triangles, 100u);
+    EXPECT_LE(st.max_area, bbox_area(d) / 1000 * (1 + 1e-12));
+    // Every input vertex is a mesh vertex used by a triangle.
+    std::vector<char> used(r.mesh.vertices.size(), 0);
+    for (const auto& t : r.mesh.triangles)
+      for (const index_t v : t)
+        used[v] = 1;
+    for (std::size_t v = 0; v < d.vertices.size(); ++v)
+      EXPECT_TRUE(used[v]) << v;
+  }
 }
