@@ -25,14 +25,20 @@ struct hand_case {
 inline hand_case grid_case(int nx, int ny, double w = 1.0, double h = 1.0) {
   hand_case c;
   c.domain.add_loop(std::vector<point>{{0, 0}, {w, 0}, {w, h}, {0, h}}, 0);
-  for (int s = 0; s < 4; ++s) c.domain.segments[s].marker = s + 1;
+  for (int s = 0; s < 4; ++s)
+    c.domain.segments[s].marker = s + 1;
   decomposition& d = c.parts;
   const auto vid = [&](int i, int j) { return static_cast<index_t>(i + (nx + 1) * j); };
   for (int j = 0; j <= ny; ++j)
     for (int i = 0; i <= nx; ++i) {
       d.vertices.push_back({w * i / nx, h * j / ny});
       const bool corner = (i == 0 || i == nx) && (j == 0 || j == ny);
-      d.vertex_markers.push_back(corner ? 1 : (j == 0 ? 1 : i == nx ? 2 : j == ny ? 3 : i == 0 ? 4 : 0));
+      d.vertex_markers.push_back(corner ? 1
+                                        : (j == 0    ? 1
+                                           : i == nx ? 2
+                                           : j == ny ? 3
+                                           : i == 0  ? 4
+                                                     : 0));
     }
   std::map<std::pair<index_t, index_t>, index_t> iface_id;
   const auto sub = [&](int i, int j) { return static_cast<index_t>(i + nx * j); };
@@ -42,8 +48,8 @@ inline hand_case grid_case(int nx, int ny, double w = 1.0, double h = 1.0) {
     if (it == iface_id.end()) {
       it = iface_id.emplace(key, static_cast<index_t>(d.interfaces.size())).first;
       interface_curve ic{key.first, key.second, {}};
-      ic.vertices = d.vertices[a] < d.vertices[b] ? std::vector<index_t>{a, b}
-                                                  : std::vector<index_t>{b, a};
+      ic.vertices =
+          d.vertices[a] < d.vertices[b] ? std::vector<index_t>{a, b} : std::vector<index_t>{b, a};
       d.interfaces.push_back(ic);
     }
     return it->second;
@@ -106,7 +112,9 @@ inline hand_case annulus_case() {
   }
   // Input segment ids: outer edge i -> i + 1 is segment i; the inner loop was added clockwise,
   // so the inner edge between inner[i] and inner[i + 1] is segment 32 + (ni - 2 - i) mod ni.
-  const auto inner_segment = [&](int i) { return static_cast<index_t>(no + ((ni - 2 - i + ni) % ni)); };
+  const auto inner_segment = [&](int i) {
+    return static_cast<index_t>(no + ((ni - 2 - i + ni) % ni));
+  };
   for (int q = 0; q < 4; ++q) {
     subdomain sd;
     std::vector<index_t> loop;
@@ -115,7 +123,8 @@ inline hand_case annulus_case() {
     for (int k = 0; k <= no / 4; ++k) {
       loop.push_back(static_cast<index_t>((o0 + k) % no));
       if (k < no / 4)
-        tags.push_back({edge_tag::kind::external, static_cast<index_t>((o0 + k) % no), 1, no_index});
+        tags.push_back(
+            {edge_tag::kind::external, static_cast<index_t>((o0 + k) % no), 1, no_index});
     }
     // outer(theta1) -> inner(theta1): interface with quarter q + 1 (id: separator at theta1).
     tags.push_back({edge_tag::kind::interface, static_cast<index_t>((q + 1) % 4), 0,
@@ -126,17 +135,26 @@ inline hand_case annulus_case() {
         tags.push_back({edge_tag::kind::external, inner_segment((i0 + k - 1) % ni), 2, no_index});
     }
     // inner(theta0) -> outer(theta0): interface with quarter q - 1 (separator at theta0).
-    tags.push_back({edge_tag::kind::interface, static_cast<index_t>(q), 0,
-                    static_cast<index_t>((q + 3) % 4)});
+    tags.push_back(
+        {edge_tag::kind::interface, static_cast<index_t>(q), 0, static_cast<index_t>((q + 3) % 4)});
     sd.loops.push_back(loop);
     sd.tags.push_back(tags);
+    double twice = 0; // shoelace: the loop is counter-clockwise
+    for (std::size_t k = 0; k < loop.size(); ++k) {
+      const point p = d.vertices[loop[k]], r = d.vertices[loop[(k + 1) % loop.size()]];
+      twice += p.x * r.y - r.x * p.y;
+    }
+    sd.area = 0.5 * twice;
     d.subdomains.push_back(sd);
   }
   for (int q = 0; q < 4; ++q) {
-    const index_t a = static_cast<index_t>((q * no / 4) % no), b = static_cast<index_t>(no + (q * ni / 4) % ni);
+    const index_t a = static_cast<index_t>((q * no / 4) % no),
+                  b = static_cast<index_t>(no + (q * ni / 4) % ni);
     interface_curve ic{static_cast<index_t>(std::min((q + 3) % 4, q)),
-                       static_cast<index_t>(std::max((q + 3) % 4, q)), {}};
-    ic.vertices = d.vertices[a] < d.vertices[b] ? std::vector<index_t>{a, b} : std::vector<index_t>{b, a};
+                       static_cast<index_t>(std::max((q + 3) % 4, q)),
+                       {}};
+    ic.vertices =
+        d.vertices[a] < d.vertices[b] ? std::vector<index_t>{a, b} : std::vector<index_t>{b, a};
     d.interfaces.push_back(ic);
   }
   return c;

@@ -6,6 +6,7 @@
 
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/madd/validate_decomposition.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
@@ -106,15 +107,16 @@ void expect_valid(const pdd::triangle_mesh& m, const hand_case& c,
                         << rep.orientation_violations << " missing " << rep.missing_segments
                         << " duplicates " << rep.duplicate_vertices << " quality "
                         << rep.quality_violations << " area " << rep.area_violations
-                        << " nonmanifold " << rep.nonmanifold_edges << " area "
-                        << rep.area_mesh << " vs " << rep.area_domain
+                        << " nonmanifold " << rep.nonmanifold_edges << " area " << rep.area_mesh
+                        << " vs " << rep.area_domain
                         << (rep.messages.empty() ? "" : "\n" + rep.messages.front());
   const pdd::mesh_statistics st = pdd::compute_statistics(m);
   EXPECT_GE(st.min_angle_deg, 20.7);
   EXPECT_LE(st.max_area, criteria.max_area);
   EXPECT_EQ(m.triangle_markers.size(), m.triangles.size());
   // Merged segments are the input boundary only: no interface piece survives the merge.
-  for (const auto& e : m.segments) EXPECT_NE(e.marker, pdd::interface_marker);
+  for (const auto& e : m.segments)
+    EXPECT_NE(e.marker, pdd::interface_marker);
 }
 
 struct named_case {
@@ -135,13 +137,17 @@ TEST(DecoupledMeshing, MergedMeshVerifiesAndIsIdenticalAcrossExecutors) {
   pdd::mesh_criteria criteria;
   for (const auto& [name, c, n] : cases()) {
     SCOPED_TRACE(name);
+    // The hand-made decomposition is well formed (orientation, tags, angles, areas).
+    const auto check = pdd::validate_decomposition(c.parts, c.domain);
+    ASSERT_TRUE(check.ok()) << check.summary();
     criteria.max_area = name == std::string("rectangle 3x2") ? 6e-4 : 2e-4;
     const run_result seq = run(c, criteria, pdd::sequential_executor{}, 1);
     ASSERT_EQ(seq.stats.subdomains.size(), n);
     EXPECT_EQ(seq.stats.interface_splits, 0u);
     EXPECT_EQ(seq.stats.remeshed_subdomains, 0u);
     EXPECT_EQ(seq.stats.triangles(), seq.mesh.triangles.size());
-    for (const auto& s : seq.stats.subdomains) EXPECT_EQ(s.runs, 1u);
+    for (const auto& s : seq.stats.subdomains)
+      EXPECT_EQ(s.runs, 1u);
     expect_valid(seq.mesh, c, criteria);
     for (std::size_t t = 0; t < seq.mesh.triangles.size(); ++t)
       ASSERT_LT(static_cast<std::size_t>(seq.mesh.triangle_markers[t]), n);
@@ -191,7 +197,8 @@ TEST(DecoupledMeshing, InterfaceVerticesSharedBitwise) {
     std::sort(pa.begin(), pa.end());
     std::sort(pb.begin(), pb.end());
     std::size_t common = 0;
-    for (const point& p : pa) common += std::binary_search(pb.begin(), pb.end(), p);
+    for (const point& p : pa)
+      common += std::binary_search(pb.begin(), pb.end(), p);
     EXPECT_GE(common, static_cast<std::size_t>(e.pieces) - 1);
   }
 }
@@ -205,12 +212,14 @@ TEST(DecoupledMeshing, MergeIndependentOfDeliveryOrder) {
   pdd::mesh_subdomains(dd, {criteria}, pdd::cgal::mesher{}, pdd::sequential_executor{}, rec);
   const auto merged_in_order = [&](std::vector<index_t> order, unsigned threads) {
     pdd::merge_sink sink(threads);
-    for (index_t id : order) sink.consume(id, pdd::triangle_mesh(rec.meshes[id]));
+    for (index_t id : order)
+      sink.consume(id, pdd::triangle_mesh(rec.meshes[id]));
     sink.finish();
     return sink.take();
   };
   std::vector<index_t> forward, backward;
-  for (index_t i = 0; i < 16; ++i) forward.push_back(i);
+  for (index_t i = 0; i < 16; ++i)
+    forward.push_back(i);
   backward.assign(forward.rbegin(), forward.rend());
   const auto a = merged_in_order(forward, 1);
   const auto b = merged_in_order(backward, 2);
@@ -218,7 +227,8 @@ TEST(DecoupledMeshing, MergeIndependentOfDeliveryOrder) {
   expect_valid(a, c, criteria);
   // Vertex count: parts minus each shared vertex's extra copies.
   std::size_t parts = 0;
-  for (const auto& [id, m] : rec.meshes) parts += m.vertices.size();
+  for (const auto& [id, m] : rec.meshes)
+    parts += m.vertices.size();
   EXPECT_LT(a.vertices.size(), parts);
 }
 
@@ -244,16 +254,18 @@ TEST(DecoupledMeshing, InvarianceRepairCatchesAndFixesTooLongPieces) {
   // Without repairs the same run refuses to deliver a non-conforming mesh.
   auto dd = pdd::decouple(c.parts, {.criteria = criteria, .k_override = 0.06});
   recording_sink rec;
-  EXPECT_THROW(pdd::mesh_subdomains(dd, {criteria, 0}, pdd::cgal::mesher{},
-                                    pdd::sequential_executor{}, rec),
-               pdd::decoupling_error);
+  EXPECT_THROW(
+      pdd::mesh_subdomains(dd, {criteria, 0}, pdd::cgal::mesher{}, pdd::sequential_executor{}, rec),
+      pdd::decoupling_error);
   EXPECT_FALSE(rec.finished);
   // Every mesh that did reach the sink kept all its interface pieces.
   for (const auto& [id, m] : rec.meshes) {
     const auto in = dd.input(id);
     std::size_t pieces = 0, kept = 0;
-    for (const auto p : in.segment_path_edge) pieces += p != pdd::no_index;
-    for (const auto& e : m.segments) kept += e.marker == pdd::interface_marker;
+    for (const auto p : in.segment_path_edge)
+      pieces += p != pdd::no_index;
+    for (const auto& e : m.segments)
+      kept += e.marker == pdd::interface_marker;
     EXPECT_EQ(kept, pieces);
   }
 }
@@ -307,7 +319,8 @@ TEST(Sinks, CountingSink) {
   criteria.max_area = 1e-3;
   auto dd = pdd::decouple(c.parts, {criteria});
   pdd::counting_sink count;
-  const auto st = pdd::mesh_subdomains(dd, {criteria}, pdd::cgal::mesher{}, pdd::tbb_executor{2}, count);
+  const auto st =
+      pdd::mesh_subdomains(dd, {criteria}, pdd::cgal::mesher{}, pdd::tbb_executor{2}, count);
   ASSERT_EQ(count.pieces().size(), 4u);
   EXPECT_EQ(count.triangles(), st.triangles());
   for (index_t s = 0; s < 4; ++s) {
@@ -340,7 +353,8 @@ TEST(Sinks, VtuDirectorySinkWritesEveryPiece) {
   }
   // The delivered meshes merge to the same mesh as a merge_sink run.
   std::vector<pdd::triangle_mesh> parts;
-  for (auto& [id, m] : rec.meshes) parts.push_back(m);
+  for (auto& [id, m] : rec.meshes)
+    parts.push_back(m);
   const auto merged = pdd::merge_meshes(std::move(parts), 2);
   auto dd2 = pdd::decouple(c.parts, {criteria});
   pdd::merge_sink ms(1);
@@ -366,8 +380,8 @@ TEST(Sinks, VtuDirectorySinkWritesEveryPiece) {
           "    for p in m.points: out.write('%s %s\\n' % (float(p[0]).hex(), float(p[1]).hex()))\n"
           "    for t in tri: out.write('%d %d %d\\n' % tuple(t))\n";
   }
-  const std::string cmd = "/usr/bin/python3 " + script.string() + " " + dir.string() + " " +
-                          dump.string();
+  const std::string cmd =
+      "/usr/bin/python3 " + script.string() + " " + dir.string() + " " + dump.string();
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   std::ifstream in(dump);
   for (index_t s = 0; s < 4; ++s) {

@@ -63,7 +63,8 @@ std::vector<double> subdomain_lfs(const decomposition& d, const E& ex) {
   std::vector<double> work(m);
   for (std::size_t s = 0; s < m; ++s) {
     std::size_t n = 0;
-    for (const auto& loop : d.subdomains[s].loops) n += loop.size();
+    for (const auto& loop : d.subdomains[s].loops)
+      n += loop.size();
     work[s] = static_cast<double>(n);
   }
   std::vector<std::exception_ptr> errors(m);
@@ -109,14 +110,15 @@ decoupled_decomposition decouple(decomposition d, const decoupling_options& opti
   decoupled_decomposition dd;
   detail::collect_path_edges(d, dd.path, dd.loop_edge_path);
   dd.shortest_separator = std::numeric_limits<double>::infinity();
-  for (const path_edge& e : dd.path) dd.shortest_separator = std::min(dd.shortest_separator, e.length);
+  for (const path_edge& e : dd.path)
+    dd.shortest_separator = std::min(dd.shortest_separator, e.length);
   const std::vector<double> lfs = detail::subdomain_lfs(d, executor);
   dd.lfs_min = *std::min_element(lfs.begin(), lfs.end());
   dd.area_term = decoupling_area_term(options.criteria);
   dd.k = options.k_override > 0.0
              ? options.k_override
-             : options.k_scale * decoupling_parameter(dd.lfs_min, dd.shortest_separator,
-                                                      options.criteria);
+             : options.k_scale *
+                   decoupling_parameter(dd.lfs_min, dd.shortest_separator, options.criteria);
   if (!(dd.k > 0.0) || !std::isfinite(dd.k))
     throw decoupling_error("unusable decoupling parameter k = " + std::to_string(dd.k) +
                            " (lfs_min " + std::to_string(dd.lfs_min) + ", shortest separator " +

@@ -28,8 +28,8 @@ struct path_edge {
   index_t interface_id = no_index;
   std::array<index_t, 2> sides{no_index, no_index}; ///< the two subdomains, smaller id first
   double length = 0.0;
-  double k = 0.0;      ///< the k it is split with: the global k, halved by each repair
-  index_t pieces = 1;  ///< nu: the number of pieces (nu - 1 split points)
+  double k = 0.0;              ///< the k it is split with: the global k, halved by each repair
+  index_t pieces = 1;          ///< nu: the number of pieces (nu - 1 split points)
   std::size_t first_point = 0; ///< its split points are points[first_point + 0 .. nu - 2], u to v
 };
 
@@ -48,13 +48,13 @@ struct subdomain_input {
 /// the canonical orientation (interface_split_point), so interface vertices are bitwise
 /// identical on both sides.
 struct decoupled_decomposition {
-  decomposition parts;                  ///< the decomposition (MADD's result)
-  double k = 0.0;                       ///< the decoupling parameter used (Theorem 15)
-  double lfs_min = 0.0;                 ///< min over subdomains of lfs_min of the loops
-  double shortest_separator = 0.0;      ///< L: shortest separator segment (inf: none)
-  double area_term = 0.0;               ///< (1/2) sqrt(A / sqrt 2) (inf: no area bound)
-  std::vector<path_edge> path;          ///< the separator segments, in order of discovery
-  std::vector<point> points;            ///< split points of all path edges (see first_point)
+  decomposition parts;             ///< the decomposition (MADD's result)
+  double k = 0.0;                  ///< the decoupling parameter used (Theorem 15)
+  double lfs_min = 0.0;            ///< min over subdomains of lfs_min of the loops
+  double shortest_separator = 0.0; ///< L: shortest separator segment (inf: none)
+  double area_term = 0.0;          ///< (1/2) sqrt(A / sqrt 2) (inf: no area bound)
+  std::vector<path_edge> path;     ///< the separator segments, in order of discovery
+  std::vector<point> points;       ///< split points of all path edges (see first_point)
   /// Per subdomain, per loop edge (loops concatenated in order): its path edge or no_index.
   std::vector<std::vector<index_t>> loop_edge_path;
 
@@ -63,7 +63,8 @@ struct decoupled_decomposition {
   /// The number of split points currently on the path (vertices added to the separators).
   std::size_t num_split_points() const noexcept {
     std::size_t n = 0;
-    for (const path_edge& e : path) n += e.pieces - 1;
+    for (const path_edge& e : path)
+      n += e.pieces - 1;
     return n;
   }
 
@@ -75,7 +76,8 @@ struct decoupled_decomposition {
     PDD_ASSERT(s < num_subdomains());
     subdomain_input in;
     detail::build_subdomain_pslg(
-        parts, s, in.domain, [&](std::size_t edge, index_t a, index_t b, pslg& g) {
+        parts, s, in.domain,
+        [&](std::size_t edge, index_t a, index_t b, pslg& g) {
           const index_t e = loop_edge_path[s][edge];
           if (e == no_index) return no_index;
           const path_edge& pe = path[e];

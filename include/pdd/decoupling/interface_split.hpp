@@ -21,15 +21,15 @@ namespace pdd {
 /// exceed 2^31. Complexity O(1).
 inline index_t interface_split_count(double length, double k) {
   if (!(length > 0.0) || !std::isfinite(length) || !(k > 0.0) || !std::isfinite(k))
-    throw decoupling_error("cannot split a separator segment of length " +
-                           std::to_string(length) + " with k = " + std::to_string(k));
+    throw decoupling_error("cannot split a separator segment of length " + std::to_string(length) +
+                           " with k = " + std::to_string(k));
   const double q = std::floor(length / (2.0 * k));
   if (!(q < 2147483647.0))
     throw limit_error("a separator segment of length " + std::to_string(length) +
-                      " would be split into more than 2^31 pieces (k = " + std::to_string(k) +
-                      ")");
+                      " would be split into more than 2^31 pieces (k = " + std::to_string(k) + ")");
   auto nu = static_cast<index_t>(q) + 1;
-  while (length / static_cast<double>(nu) >= 2.0 * k * (1.0 - 1e-12)) ++nu;
+  while (length / static_cast<double>(nu) >= 2.0 * k * (1.0 - 1e-12))
+    ++nu;
   return nu;
 }
 

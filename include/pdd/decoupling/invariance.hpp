@@ -49,7 +49,8 @@ inline std::vector<index_t> split_interface_pieces(const subdomain_input& in,
     if (a >= n || b >= n) return;
     const auto it = std::lower_bound(pieces.begin(), pieces.end(),
                                      std::pair<std::uint64_t, index_t>{key(a, b), 0});
-    for (auto j = it; j != pieces.end() && j->first == key(a, b); ++j) ok[j - pieces.begin()] = 1;
+    for (auto j = it; j != pieces.end() && j->first == key(a, b); ++j)
+      ok[j - pieces.begin()] = 1;
   };
   for (const auto& t : m.triangles) {
     mark(t[0], t[1]);
@@ -58,8 +59,8 @@ inline std::vector<index_t> split_interface_pieces(const subdomain_input& in,
   }
   std::vector<index_t> failed;
   for (std::size_t j = 0; j < pieces.size(); ++j)
-    if (!ok[j] || std::binary_search(r.split_segments.begin(), r.split_segments.end(),
-                                     pieces[j].second))
+    if (!ok[j] ||
+        std::binary_search(r.split_segments.begin(), r.split_segments.end(), pieces[j].second))
       failed.push_back(pieces[j].second);
   std::sort(failed.begin(), failed.end());
   return failed;

@@ -26,7 +26,8 @@ void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterfac
                           std::vector<index_t>& segment_path_edge, int interface_mark) {
   const subdomain& sd = d.subdomains[s];
   std::size_t total = 0;
-  for (const auto& loop : sd.loops) total += loop.size();
+  for (const auto& loop : sd.loops)
+    total += loop.size();
   std::unordered_map<index_t, index_t> local;
   local.reserve(total);
   g.vertices.reserve(total);

@@ -16,13 +16,12 @@ namespace pdd::detail {
 template <class F>
 void parallel_for_index(std::size_t n, unsigned threads, F&& f) {
   if (threads == 1 || n <= 1) {
-    for (std::size_t i = 0; i < n; ++i) f(i);
+    for (std::size_t i = 0; i < n; ++i)
+      f(i);
     return;
   }
   tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
-  arena.execute([&] {
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { f(i); });
-  });
+  arena.execute([&] { tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { f(i); }); });
 }
 
 } // namespace pdd::detail

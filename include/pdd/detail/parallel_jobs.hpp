@@ -21,8 +21,7 @@ inline std::vector<index_t> schedule_order(std::span<const double> work) {
   std::vector<index_t> order(work.size());
   std::iota(order.begin(), order.end(), index_t{0});
   auto w = [&](index_t i) { return std::isnan(work[i]) ? 0.0 : work[i]; };
-  std::stable_sort(order.begin(), order.end(),
-                   [&](index_t a, index_t b) { return w(a) > w(b); });
+  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) { return w(a) > w(b); });
   return order;
 }
 

@@ -58,21 +58,22 @@ inline triangle_mesh merge_parts(std::vector<triangle_mesh>& parts, unsigned thr
   const std::size_t np = parts.size();
   std::vector<std::vector<index_t>> boundary(np);
   std::vector<std::size_t> kept(np);
-  parallel_for_index(np, threads, [&](std::size_t s) { boundary_vertices(parts[s], boundary[s], kept[s]); });
+  parallel_for_index(np, threads,
+                     [&](std::size_t s) { boundary_vertices(parts[s], boundary[s], kept[s]); });
 
   // Shared vertices, in part order (sequential: only boundary vertices are hashed).
   std::vector<std::vector<shared_vertex>> shared(np);
   std::unordered_map<point, std::pair<index_t, index_t>, exact_point_hash> owner;
   std::size_t nb = 0;
-  for (const auto& b : boundary) nb += b.size();
+  for (const auto& b : boundary)
+    nb += b.size();
   owner.reserve(nb);
   std::vector<std::size_t> voff(np + 1, 0), toff(np + 1, 0), soff(np + 1, 0);
   for (std::size_t s = 0; s < np; ++s) {
     const triangle_mesh& m = parts[s];
     for (const index_t b : boundary[s]) {
       PDD_ASSERT(b < m.vertices.size());
-      const auto [it, fresh] =
-          owner.try_emplace(m.vertices[b], static_cast<index_t>(s), b);
+      const auto [it, fresh] = owner.try_emplace(m.vertices[b], static_cast<index_t>(s), b);
       if (!fresh) {
         if (it->second.first == s)
           throw decoupling_error("merge: subdomain " + std::to_string(s) +
@@ -98,10 +99,10 @@ inline triangle_mesh merge_parts(std::vector<triangle_mesh>& parts, unsigned thr
   out.segments.resize(soff[np]);
   const auto global_of_owned = [&](std::size_t s, index_t v) {
     const auto& sh = shared[s];
-    const auto below = std::lower_bound(sh.begin(), sh.end(), v, [](const shared_vertex& x,
-                                                                    index_t y) {
-                         return x.local < y;
-                       }) - sh.begin();
+    const auto below =
+        std::lower_bound(sh.begin(), sh.end(), v,
+                         [](const shared_vertex& x, index_t y) { return x.local < y; }) -
+        sh.begin();
     return static_cast<index_t>(voff[s] + v - static_cast<std::size_t>(below));
   };
   parallel_for_index(np, threads, [&](std::size_t s) {

@@ -52,7 +52,8 @@ struct meshing_statistics {
 
   std::size_t triangles() const noexcept {
     std::size_t n = 0;
-    for (const auto& s : subdomains) n += s.triangles;
+    for (const auto& s : subdomains)
+      n += s.triangles;
     return n;
   }
 };
@@ -96,8 +97,8 @@ meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_op
   const bool bounded = std::isfinite(options.criteria.max_area) && options.criteria.max_area > 0;
   for (index_t s = 0; s < m; ++s) {
     stats.subdomains[s].area = detail::subdomain_area(dd.parts, s);
-    work[s] = bounded ? stats.subdomains[s].area / options.criteria.max_area
-                      : stats.subdomains[s].area;
+    work[s] =
+        bounded ? stats.subdomains[s].area / options.criteria.max_area : stats.subdomains[s].area;
   }
   if constexpr (requires { sink.start(m); }) sink.start(m);
 
@@ -114,7 +115,8 @@ meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_op
       ++rep.runs;
       if (!split.empty()) {
         std::vector<index_t> edges;
-        for (const index_t seg : split) edges.push_back(in.segment_path_edge[seg]);
+        for (const index_t seg : split)
+          edges.push_back(in.segment_path_edge[seg]);
         std::sort(edges.begin(), edges.end());
         edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
         const std::lock_guard lock(mutex);
@@ -137,10 +139,9 @@ meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_op
 
   while (!failures.empty()) {
     if (stats.repair_rounds >= options.max_repairs)
-      throw decoupling_error("the decoupling path was split by the kernel and " +
-                             std::to_string(options.max_repairs) +
-                             " repair rounds did not fix it: " +
-                             detail::describe_failures(failures, dd));
+      throw decoupling_error(
+          "the decoupling path was split by the kernel and " + std::to_string(options.max_repairs) +
+          " repair rounds did not fix it: " + detail::describe_failures(failures, dd));
     ++stats.repair_rounds;
     std::set<index_t> redo;
     std::set<index_t> edges;
@@ -156,7 +157,8 @@ meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_op
     failures.clear();
     const std::vector<index_t> ids(redo.begin(), redo.end());
     std::vector<double> redo_work(ids.size());
-    for (std::size_t j = 0; j < ids.size(); ++j) redo_work[j] = work[ids[j]];
+    for (std::size_t j = 0; j < ids.size(); ++j)
+      redo_work[j] = work[ids[j]];
     stats.remeshed_subdomains += ids.size();
     executor.run(redo_work, [&](index_t j) { mesh_one(ids[j]); });
   }

@@ -21,7 +21,8 @@ struct sequential_executor {
   template <class Job>
   void run(std::span<const double> work, Job&& job) const {
     detail::job_errors errors(work.size());
-    for (const index_t i : detail::schedule_order(work)) errors.guarded(job, i);
+    for (const index_t i : detail::schedule_order(work))
+      errors.guarded(job, i);
     errors.rethrow_first();
   }
 };

@@ -25,8 +25,9 @@ struct tbb_executor {
 
   /// The number of threads run() uses.
   unsigned concurrency() const {
-    return threads > 0 ? threads
-                       : static_cast<unsigned>(std::max(1, tbb::this_task_arena::max_concurrency()));
+    return threads > 0
+               ? threads
+               : static_cast<unsigned>(std::max(1, tbb::this_task_arena::max_concurrency()));
   }
 
   /// Runs job(i) for every i in [0, work.size()), starting them in order of decreasing work[i].
@@ -40,7 +41,8 @@ struct tbb_executor {
     detail::job_errors errors(n);
     const unsigned p = concurrency();
     if (p == 1 || n == 1) {
-      for (const index_t i : order) errors.guarded(job, i);
+      for (const index_t i : order)
+        errors.guarded(job, i);
     } else {
       tbb::task_arena arena(static_cast<int>(p));
       std::atomic<std::size_t> next{0};

@@ -1,0 +1,89 @@
+/// \file generate.hpp
+/// pdd::generate: the one-call path of the uniform decoupling method (dissertation ch. 6):
+/// decompose (MADD), decouple (Theorem 15, Lemma 9), mesh every subdomain in parallel and merge
+/// (or stream to a MeshSink).
+#pragma once
+
+#include <pdd/concepts/delaunay_mesher.hpp>
+#include <pdd/concepts/executor.hpp>
+#include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/concepts/mesh_sink.hpp>
+#include <pdd/detail/system.hpp>
+#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/mesh/merge.hpp>
+#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/parallel/tbb_executor.hpp>
+#include <pdd/partition/default_partitioner.hpp>
+#include <pdd/pipeline.hpp>
+
+#include <chrono>
+#include <utility>
+
+namespace pdd {
+
+/// The merged mesh and what it took.
+struct generate_result {
+  /// One conforming Delaunay mesh of the domain; triangle markers are subdomain ids (0 when
+  /// N == 1); segments are the mesh edges on input segments with their markers.
+  triangle_mesh mesh;
+  generate_statistics statistics;
+};
+
+/// Meshes the domain of `domain` with guaranteed quality by the uniform decoupling method:
+/// N subdomains by MADD (options.subdomains, 0: automatic_subdomains; 1: the kernel on the
+/// whole domain), the decoupling path of Theorem 15, every subdomain meshed independently on
+/// options.threads threads, the meshes merged in memory (merge_sink). The result is bitwise
+/// the same for every thread count.
+/// \tparam M a DelaunayMesher (default pdd::cgal::mesher). \tparam P a GraphPartitioner
+/// (default METIS when found). \tparam E an Executor (default pdd::tbb_executor).
+/// \pre `domain` is valid (pdd::validate); input angles >= 60 deg for the method's guarantee
+/// (smaller ones are left to the kernel and the invariance check).
+/// \throws pdd::geometry_error (invalid domain), pdd::limit_error (the mesh would not fit in
+/// memory: the message has the estimate), pdd::decomposition_error (MADD), pdd::meshing_error
+/// (kernel, with the subdomain id), pdd::decoupling_error (invariance repairs exhausted).
+/// Complexity: the kernel on every subdomain plus O(mesh size) merging.
+template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitioner,
+          Executor E = tbb_executor>
+generate_result generate(const pslg& domain, const generate_options& options = {},
+                         const M& mesher = {}, const P& partitioner = {}) {
+  const auto t0 = std::chrono::steady_clock::now();
+  pipeline<M, P, E> pl(domain, options, mesher, partitioner);
+  generate_result r;
+  if (pl.subdomains() <= 1) {
+    // The kernel's own output is the result: no copy through a sink.
+    pl.template check_memory<merge_sink>();
+    const auto tm = std::chrono::steady_clock::now();
+    r.mesh = pl.mesh_whole();
+    generate_statistics& st = pl.statistics();
+    st.subdomains = 1;
+    st.timings.mesh = detail::seconds_since(tm);
+    st.triangles = r.mesh.triangles.size();
+  } else {
+    pl.template check_memory<merge_sink>();
+    merge_sink sink(options.threads);
+    pl.mesh(sink);
+    r.mesh = sink.take();
+  }
+  r.statistics = std::move(pl.statistics());
+  r.statistics.vertices = r.mesh.vertices.size();
+  r.statistics.timings.total = detail::seconds_since(t0);
+  return r;
+}
+
+/// As generate(), but delivers each subdomain mesh to `sink` as soon as it is done (e.g. a
+/// vtu_directory_sink writes one file per subdomain and keeps nothing in memory, so meshes
+/// larger than memory can be made). Returns the statistics.
+/// \tparam S a MeshSink. \throws as generate().
+template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitioner,
+          Executor E = tbb_executor, MeshSink S>
+generate_statistics generate(const pslg& domain, const generate_options& options, S& sink,
+                             const M& mesher = {}, const P& partitioner = {}) {
+  const auto t0 = std::chrono::steady_clock::now();
+  pipeline<M, P, E> pl(domain, options, mesher, partitioner);
+  pl.mesh(sink);
+  generate_statistics st = std::move(pl.statistics());
+  st.timings.total = detail::seconds_since(t0);
+  return st;
+}
+
+} // namespace pdd
