@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <vector>
@@ -55,9 +56,14 @@ partition_graph test_graph(std::uint64_t i) {
   return i < 200 ? random_holey_grid(1000 + i) : madd_like_graph(60 + 10 * (i - 200), 0.5, i);
 }
 
+struct family_result {
+  int repaired = 0;   // raw bisections that were not connected
+  int unbalanced = 0; // results over the balance bound
+};
+
 template <class P>
-int check_family(const P& p, const char* name) {
-  int repaired = 0;
+family_result check_family(const P& p, const char* name) {
+  family_result r;
   for (std::uint64_t i = 0; i < 240; ++i) {
     const partition_graph g = test_graph(i);
     const pdd::bisection_options o{.max_part_fraction = 0.55, .seed = i};
@@ -65,30 +71,38 @@ int check_family(const P& p, const char* name) {
     EXPECT_EQ(part.size(), boost::num_vertices(g));
     EXPECT_EQ(connected_nonempty_parts(g, part), 2) << name << " graph " << i;
     EXPECT_EQ(pdd::connected_bisection(g, p, o), part) << name << " graph " << i;
+    const auto w = pdd::part_weights(g, part);
+    if (std::max(w[0], w[1]) > 0.55 * (w[0] + w[1])) ++r.unbalanced;
     const auto raw = p.bisect(g, o);
     if (connected_nonempty_parts(g, raw) != 2)
-      ++repaired;
+      ++r.repaired;
     else
       EXPECT_EQ(raw, part) << "a connected bisection is returned unchanged";
   }
-  return repaired;
+  std::printf("%-20s %3d of 240 raw bisections disconnected, %d results over the bound\n", name,
+              r.repaired, r.unbalanced);
+  return r;
 }
 
 TEST(ConnectedBisection, LibraryPartitionersOnRandomGraphs) {
-  const int boost_repairs = check_family(pdd::boost_partitioner{}, "boost");
-  std::printf("boost_partitioner: %d of 240 raw bisections disconnected\n", boost_repairs);
-  EXPECT_GT(boost_repairs, 0); // the family does exercise the repair
+  const family_result b = check_family(pdd::boost_partitioner{}, "boost_partitioner");
+  EXPECT_GT(b.repaired, 0); // the family does exercise the repair
+  EXPECT_LE(b.unbalanced, 5);
 #ifdef PDD_HAVE_METIS
-  const int metis_repairs = check_family(pdd::metis_partitioner{}, "metis");
-  std::printf("metis_partitioner: %d of 240 raw bisections disconnected\n", metis_repairs);
-  EXPECT_GT(metis_repairs, 0);
+  const family_result m = check_family(pdd::metis_partitioner{}, "metis_partitioner");
+  EXPECT_GT(m.repaired, 0);
+  EXPECT_LE(m.unbalanced, 5);
 #endif
 }
 
 TEST(ConnectedBisection, AdversarialPartitionersOnRandomGraphs) {
-  EXPECT_EQ(check_family(parity_partitioner{}, "parity"), 240);
-  EXPECT_EQ(check_family(one_part_partitioner{}, "one part"), 240);
-  EXPECT_GT(check_family(index_halves_partitioner{}, "index halves"), 0);
+  const family_result parity = check_family(parity_partitioner{}, "parity");
+  EXPECT_EQ(parity.repaired, 240);
+  EXPECT_LE(parity.unbalanced, 5);
+  const family_result one_part = check_family(one_part_partitioner{}, "one part");
+  EXPECT_EQ(one_part.repaired, 240);
+  EXPECT_LE(one_part.unbalanced, 5);
+  EXPECT_GT(check_family(index_halves_partitioner{}, "index halves").repaired, 0);
 }
 
 TEST(ConnectedBisection, RepairKeepsBalanceWhenStraysAreSmall) {

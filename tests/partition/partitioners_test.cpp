@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -127,6 +128,30 @@ TYPED_TEST(Partitioner, SameSeedSameBisection) {
     EXPECT_EQ(p.bisect(g, o), p.bisect(g, o));
     EXPECT_EQ(p.bisect(g, o), TypeParam{}.bisect(partition_graph(g), o));
   }
+}
+
+TYPED_TEST(Partitioner, ConcurrentCallsGiveTheSequentialResults) {
+  std::vector<partition_graph> graphs;
+  for (std::uint64_t s = 0; s < 8; ++s)
+    graphs.push_back(s % 2 ? random_holey_grid(s) : madd_like_graph(150, 0.3, s));
+  const TypeParam p{};
+  std::vector<std::vector<std::uint8_t>> expected;
+  for (std::size_t i = 0; i < graphs.size(); ++i)
+    expected.push_back(p.bisect(graphs[i], {.seed = i}));
+  std::vector<std::vector<std::vector<std::uint8_t>>> got(4);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < 4; ++t)
+    threads.emplace_back([&, t] {
+      got[t].resize(graphs.size());
+      for (std::size_t k = 0; k < 3 * graphs.size(); ++k) {
+        const std::size_t i = (k + 3 * t) % graphs.size();
+        got[t][i] = p.bisect(graphs[i], {.seed = i});
+      }
+    });
+  for (std::thread& th : threads)
+    th.join();
+  for (std::size_t t = 0; t < 4; ++t)
+    EXPECT_EQ(got[t], expected) << "thread " << t;
 }
 
 TYPED_TEST(Partitioner, TinyGraphs) {

@@ -1,11 +1,12 @@
 /// \file partition_repair.hpp
 /// Implementation detail of pdd::connected_bisection (dissertation 5.1: "a routine ... that
 /// identifies these cases and restores the connectivity"): components of each part, moving
-/// stray components across, and the connected-growth fallback.
+/// stray components across, and connected growths as further candidates.
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/detail/partition_csr.hpp>
+#include <pdd/detail/partition_initial.hpp>
 #include <pdd/detail/partition_traversal.hpp>
 
 #include <boost/graph/connected_components.hpp>
@@ -75,23 +76,27 @@ inline std::vector<std::uint8_t> repair_bisection(const partition_graph& g,
   return part;
 }
 
-/// Connected growth: part 1 := the shortest prefix of the BFS order from a pseudo-peripheral
-/// vertex that reaches half the weight (at least one vertex, at most n - 1). A BFS prefix is
-/// connected; the rest need not be, so callers repair it. \pre g connected, n >= 2.
-inline std::vector<std::uint8_t> connected_growth(const partition_graph& g,
-                                                  const std::vector<double>& weight) {
+/// Connected growths of part 1 up to half the weight (the grown part is connected; the rest need
+/// not be, so callers repair it): the BFS prefix from a pseudo-peripheral vertex a, and greedy
+/// graph growing (least cut increase first) from a and from the last vertex of a's BFS.
+/// \pre g connected, n >= 2; weight are the effective vertex weights. O((n + m) log n).
+inline std::vector<std::vector<std::uint8_t>>
+connected_growths(const partition_graph& g, const std::vector<double>& weight, double max_weight) {
   const std::size_t n = boost::num_vertices(g);
   double total = 0.0, grown = 0.0;
   for (const double w : weight)
     total += w;
-  const std::vector<std::size_t> order =
-      breadth_first_order(g, pseudo_peripheral_vertex(g, 0), false);
-  std::vector<std::uint8_t> part(n, 0);
+  const std::size_t a = pseudo_peripheral_vertex(g, 0);
+  const std::vector<std::size_t> order = breadth_first_order(g, a, false);
+  std::vector<std::vector<std::uint8_t>> growths(1, std::vector<std::uint8_t>(n, 0));
   for (std::size_t i = 0; i + 1 < n && (i == 0 || grown < 0.5 * total); ++i) {
-    part[order[i]] = 1;
+    growths[0][order[i]] = 1;
     grown += weight[order[i]];
   }
-  return part;
+  const ml_graph mg = to_ml_graph(g); // same effective weights
+  for (const std::size_t seed : {a, order.back()})
+    growths.push_back(grow_bisection(mg, seed, 0.5 * total, max_weight));
+  return growths;
 }
 
 } // namespace pdd::detail

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/detail/partition_connected_refine.hpp>
 #include <pdd/detail/partition_csr.hpp>
 #include <pdd/detail/partition_repair.hpp>
 #include <pdd/errors.hpp>
@@ -14,9 +15,12 @@
 
 #include <boost/graph/connected_components.hpp>
 
+#include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pdd {
@@ -44,22 +48,56 @@ inline bisection_score score_of(const partition_graph& g, const std::vector<std:
     pw[part[v]] += weight[v];
   return {balance_excess(pw, max_weight), cut_weight(g, part)};
 }
+/// The best connected candidate derived from the disconnected bisection raw (see
+/// pdd::connected_bisection). \pre g connected, n >= 2.
+inline std::vector<std::uint8_t> repaired_bisection(const partition_graph& g,
+                                                    const std::vector<std::uint8_t>& raw,
+                                                    const std::vector<double>& weight,
+                                                    double max_weight) {
+  const std::size_t n = raw.size();
+  const auto repaired = [&](std::vector<std::uint8_t> part, std::uint8_t first) {
+    part = repair_bisection(g, std::move(part), first, weight);
+    connected_refine(g, part, weight, max_weight, n);
+    return part;
+  };
+  const std::size_t ones = static_cast<std::size_t>(std::count(raw.begin(), raw.end(), 1));
+  std::vector<std::vector<std::uint8_t>> candidates;
+  if (ones != 0 && ones != n) {
+    candidates.push_back(repaired(raw, 0));
+    candidates.push_back(repaired(raw, 1));
+  }
+  for (std::vector<std::uint8_t>& growth : connected_growths(g, weight, max_weight))
+    candidates.push_back(repaired(std::move(growth), 1));
+  std::size_t best = 0;
+  bisection_score best_score = score_of(g, candidates[0], weight, max_weight);
+  for (std::size_t i = 1; i < candidates.size(); ++i) {
+    const bisection_score s = score_of(g, candidates[i], weight, max_weight);
+    if (s < best_score) best = i, best_score = s;
+  }
+  PDD_ASSERT(is_connected_bisection(g, candidates[best]));
+  return candidates[best];
+}
 } // namespace detail
 
 /// Bisects the connected graph g with the partitioner p and returns a bisection whose two parts
 /// are non-empty and each induce a connected subgraph. When p's bisection is already such, it
-/// is returned unchanged. Otherwise each part keeps its heaviest connected component and the
-/// stray components move to the other part, in both orders (part 0 first, part 1 first); if p
-/// left a part empty, or both repairs exceed the balance bound, a connected growth (BFS prefix
-/// from a pseudo-peripheral vertex up to half the weight, then repaired) is a third candidate.
-/// The candidate with the smallest excess over o.max_part_fraction of the total weight, then
-/// the smallest cut, wins (the first on ties). All-zero vertex weights count as ones.
+/// is returned unchanged. Otherwise the candidates are: p's bisection repaired by letting each
+/// part keep its heaviest connected component and moving the stray components to the other
+/// part (which lowers the cut: a stray component's edges all lead to the other part), in both
+/// orders (part 0 first, part 1 first; skipped when p left a part empty); and three connected
+/// growths up to half the weight (BFS from a pseudo-peripheral vertex, greedy graph growing
+/// from it and from the far end of its BFS), repaired likewise. Each candidate is then
+/// rebalanced and its cut lowered greedily by moving boundary vertices that are not
+/// articulation points of their part (both parts stay connected). The candidate with the
+/// smallest excess over o.max_part_fraction of the total weight, then the smallest cut, wins
+/// (the first on ties). All-zero vertex weights count as ones.
 /// \tparam P a GraphPartitioner.
 /// \pre g is connected and has at least two vertices.
 /// \throws decomposition_error if g has fewer than two vertices or is not connected, if a
 /// weight is negative or not finite, if o.max_part_fraction is outside [0.5, 1], or if p
 /// returns a vector of the wrong size or with entries other than 0 and 1; whatever p throws.
-/// Complexity O(n + m) plus p's bisection. Deterministic when p is.
+/// Complexity O(n + m) plus p's bisection when p's bisection is connected; O(k (n + m)) for k
+/// refinement moves otherwise (k <= n). Deterministic when p is.
 /// Thread-safety: reentrant when p.bisect is.
 template <GraphPartitioner P>
 std::vector<std::uint8_t> connected_bisection(const partition_graph& g, const P& p,
@@ -85,26 +123,7 @@ std::vector<std::uint8_t> connected_bisection(const partition_graph& g, const P&
   double total = 0.0;
   for (const double w : weight)
     total += w;
-  const double max_weight = o.max_part_fraction * total;
-  const std::size_t ones = static_cast<std::size_t>(std::count(raw.begin(), raw.end(), 1));
-  std::vector<std::vector<std::uint8_t>> candidates;
-  if (ones != 0 && ones != n) {
-    candidates.push_back(detail::repair_bisection(g, raw, 0, weight));
-    candidates.push_back(detail::repair_bisection(g, raw, 1, weight));
-  }
-  const auto excess = [&](const std::vector<std::uint8_t>& c) {
-    return detail::score_of(g, c, weight, max_weight).excess;
-  };
-  if (candidates.empty() || (excess(candidates[0]) > 0.0 && excess(candidates[1]) > 0.0))
-    candidates.push_back(
-        detail::repair_bisection(g, detail::connected_growth(g, weight), 1, weight));
-  std::size_t best = 0;
-  for (std::size_t i = 1; i < candidates.size(); ++i)
-    if (detail::score_of(g, candidates[i], weight, max_weight) <
-        detail::score_of(g, candidates[best], weight, max_weight))
-      best = i;
-  PDD_ASSERT(detail::is_connected_bisection(g, candidates[best]));
-  return candidates[best];
+  return detail::repaired_bisection(g, raw, weight, o.max_part_fraction * total);
 }
 
 } // namespace pdd
