@@ -4,6 +4,7 @@
 /// the extraction of the result.
 #pragma once
 
+#include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/detail/cgal_mesher_faces.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/pslg.hpp>
@@ -149,15 +150,11 @@ private:
   }
 };
 
-/// Marks the domain: faces enclosed by an odd number of constrained loops (nesting level
-/// counted from the infinite face, one flood per level as in CGAL's mark_domain_in_
-/// triangulation), less the constraint-bounded regions that contain a hole point.
-/// Complexity O(faces + holes * locate).
-inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
-  for (auto f = tr.all_faces_begin(); f != tr.all_faces_end(); ++f) {
+/// Sets every face's nesting level (face info): the number of constrained edges crossed from
+/// the infinite face, one flood per level as in CGAL's mark_domain_in_triangulation.
+inline void mark_nesting(cdt& tr) {
+  for (auto f = tr.all_faces_begin(); f != tr.all_faces_end(); ++f)
     f->info() = -1;
-    f->set_in_domain(false);
-  }
   std::vector<face_handle> stack;
   std::vector<cdt::Edge> border;
   const auto flood = [&](face_handle start, int level) {
@@ -181,11 +178,18 @@ inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
   flood(tr.infinite_face(), 0);
   for (std::size_t k = 0; k < border.size(); ++k) {
     const auto [f, i] = border[k];
-    const face_handle n = f->neighbor(i);
-    if (n->info() == -1) flood(n, f->info() + 1);
+    if (f->neighbor(i)->info() == -1) flood(f->neighbor(i), f->info() + 1);
   }
-  for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
-    f->set_in_domain(f->info() % 2 == 1);
+}
+
+/// Marks the domain: faces enclosed by an odd number of constrained loops (odd nesting
+/// level), less the constraint-bounded regions that contain a hole point.
+/// Complexity O(faces + holes * locate).
+inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
+  mark_nesting(tr);
+  for (auto f = tr.all_faces_begin(); f != tr.all_faces_end(); ++f)
+    f->set_in_domain(!tr.is_infinite(f) && f->info() % 2 == 1);
+  std::vector<face_handle> stack;
   for (const point& h : holes) {
     const face_handle f = tr.locate(cgal_point(h.x, h.y));
     if (f == face_handle() || tr.is_infinite(f) || !f->is_in_domain()) continue;
@@ -205,11 +209,10 @@ inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
   }
 }
 
-/// Inserts the vertices (spatially sorted, with their input index) and the segments.
-/// \throws meshing_error for non-finite coordinates, duplicate vertices, bad segment indices,
-/// degenerate segments, crossing segments or a vertex inside a segment.
+/// Inserts the vertices, spatially sorted, with their input index as info.
+/// \throws meshing_error for a non-finite coordinate or coinciding vertices.
 /// \returns the vertex handle of every input vertex.
-inline std::vector<vertex_handle> build_cdt(cdt& tr, const pslg& d) {
+inline std::vector<vertex_handle> insert_vertices(cdt& tr, const pslg& d) {
   const std::size_t n = d.vertices.size();
   if (n >= none) throw meshing_error(-1, "too many vertices");
   std::vector<cgal_point> pts;
@@ -237,6 +240,16 @@ inline std::vector<vertex_handle> build_cdt(cdt& tr, const pslg& d) {
     vh[i] = v;
     hint = v->face();
   }
+  return vh;
+}
+
+/// Inserts the vertices and the segments (a repeated segment is inserted once).
+/// \throws meshing_error for non-finite coordinates, coinciding vertices, bad segment indices,
+/// degenerate segments, crossing segments or a vertex inside a segment.
+/// \returns the vertex handle of every input vertex.
+inline std::vector<vertex_handle> build_cdt(cdt& tr, const pslg& d) {
+  const std::vector<vertex_handle> vh = insert_vertices(tr, d);
+  const std::size_t n = d.vertices.size();
   for (std::size_t s = 0; s < d.segments.size(); ++s) {
     const segment& sg = d.segments[s];
     const std::string name = "segment " + std::to_string(s);
@@ -307,5 +320,68 @@ private:
   }
   std::vector<std::pair<std::uint64_t, index_t>> keys_;
 };
+
+/// Numbers the Steiner vertices after the input vertices, in the triangulation's (insertion)
+/// order, and copies all vertices with their markers into m.
+inline void extract_vertices(cdt& tr, const pslg& d, const segment_table& table, triangle_mesh& m) {
+  const std::size_t n = d.vertices.size();
+  m.vertices.reserve(tr.number_of_vertices());
+  m.vertex_markers.reserve(tr.number_of_vertices());
+  m.vertices.assign(d.vertices.begin(), d.vertices.end());
+  m.vertex_markers.assign(d.vertex_markers.begin(), d.vertex_markers.end());
+  m.vertex_markers.resize(n, 0);
+  auto next = static_cast<index_t>(n);
+  for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
+    vertex_info& info = v->info();
+    if (info.id != none) continue;
+    info.id = next++;
+    m.vertices.push_back({v->point().x(), v->point().y()});
+    const index_t s = info.seg_a == none ? none : table.find(info.seg_a, info.seg_b);
+    m.vertex_markers.push_back(s == none ? 0 : d.segments[s].marker);
+  }
+}
+
+/// Copies the in-domain faces (counter-clockwise, marker 0) and the constrained edges that
+/// bound or cross the domain (sorted, a < b, with their segment's marker) into m.
+inline void extract_faces_and_segments(cdt& tr, const pslg& d, const segment_table& table,
+                                       triangle_mesh& m) {
+  m.triangles.reserve(tr.number_of_faces());
+  for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+    if (f->is_in_domain())
+      m.triangles.push_back(
+          {f->vertex(0)->info().id, f->vertex(1)->info().id, f->vertex(2)->info().id});
+  m.triangle_markers.assign(m.triangles.size(), 0);
+  for (auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
+    const auto& [f, i] = *e;
+    if (!f->is_constrained(i) || !(f->is_in_domain() || f->neighbor(i)->is_in_domain())) continue;
+    const vertex_info& a = f->vertex(cdt::cw(i))->info();
+    const vertex_info& b = f->vertex(cdt::ccw(i))->info();
+    const index_t s = a.seg_a != none   ? table.find(a.seg_a, a.seg_b)
+                      : b.seg_a != none ? table.find(b.seg_a, b.seg_b)
+                                        : table.find(a.id, b.id);
+    m.segments.push_back(
+        {std::min(a.id, b.id), std::max(a.id, b.id), s == none ? 0 : d.segments[s].marker});
+  }
+  std::sort(m.segments.begin(), m.segments.end(), [](const mesh_edge& x, const mesh_edge& y) {
+    return x.a != y.a ? x.a < y.a : x.b < y.b;
+  });
+}
+
+/// The result of a refined triangulation. A split segment's halves may meet at a rounded
+/// midpoint slightly off the segment's line, so its endpoints can still be joined by an
+/// (unconstrained) edge: a segment counts as unsplit only if it is a constrained edge.
+inline mesher_result extract(cdt& tr, const pslg& d, const std::vector<vertex_handle>& vh) {
+  const segment_table table(d);
+  mesher_result r;
+  extract_vertices(tr, d, table, r.mesh);
+  if (tr.dimension() == 2) extract_faces_and_segments(tr, d, table, r.mesh);
+  for (std::size_t s = 0; s < d.segments.size(); ++s) {
+    face_handle f;
+    int i = 0;
+    if (!tr.is_edge(vh[d.segments[s].a], vh[d.segments[s].b], f, i) || !f->is_constrained(i))
+      r.split_segments.push_back(static_cast<index_t>(s));
+  }
+  return r;
+}
 
 } // namespace pdd::detail::cgal_mesh

@@ -18,6 +18,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -38,8 +39,8 @@ struct verify_options {
 };
 
 /// What verify() found. Counts are exact; messages describe the first max_reported
-/// violations (ids and coordinates) in a fixed order: triangles by index, then vertices, then
-/// edges by their endpoints, then segments by index.
+/// violations (ids and coordinates) in a fixed order: triangles by index, then duplicate
+/// vertices, then segments by index, then edges by their endpoints, then the area.
 struct verification_report {
   std::size_t delaunay_violations = 0;    ///< interior edges that are not locally Delaunay
   std::size_t orientation_violations = 0; ///< clockwise, degenerate or malformed triangles
@@ -65,7 +66,18 @@ struct verification_report {
 
 namespace detail {
 
-/// Per-triangle checks (bit flags), computed in parallel.
+/// Collects violations: counts all, describes the first max_reported.
+struct violation_sink {
+  verification_report& r;
+  std::size_t max_reported;
+  template <class Describe>
+  void add(std::size_t& counter, Describe&& describe) {
+    ++counter;
+    if (r.messages.size() < max_reported) r.messages.push_back(describe());
+  }
+};
+
+/// Per-triangle results (bit flags), computed in parallel.
 enum triangle_flag : std::uint8_t {
   tri_malformed = 1,
   tri_orientation = 2,
@@ -74,31 +86,20 @@ enum triangle_flag : std::uint8_t {
 };
 
 template <class AreaBound>
-verification_report verify_impl_run(const triangle_mesh& m, const pslg& d, const verify_options& o,
-                                    const AreaBound& bound_at) {
+std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_options& o,
+                                          const AreaBound& bound_at) {
   namespace vi = verify_impl;
-  using vi::str;
-  verification_report r;
-  const auto report = [&](std::size_t& counter, const std::function<std::string()>& what) {
-    ++counter;
-    if (r.messages.size() < o.max_reported) r.messages.push_back(what());
-  };
   const std::size_t nv = m.vertices.size();
-  const std::size_t nt = m.triangles.size();
-
-  // Triangles: orientation (exact), angles and area against the bounds.
-  std::vector<char> valid(nt, 0);
-  std::vector<std::uint8_t> flags(nt, 0);
+  std::vector<std::uint8_t> flags(m.triangles.size(), 0);
   const double min_angle = o.criteria.min_angle_deg - 1e-9;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nt, 1024), [&](const auto& range) {
-    for (std::size_t t = range.begin(); t != range.end(); ++t) {
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flags.size(), 1024), [&](const auto& rg) {
+    for (std::size_t t = rg.begin(); t != rg.end(); ++t) {
       const auto& tri = m.triangles[t];
       if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv || tri[0] == tri[1] || tri[1] == tri[2] ||
           tri[0] == tri[2]) {
         flags[t] = tri_malformed;
         continue;
       }
-      valid[t] = 1;
       const point& a = m.vertices[tri[0]];
       const point& b = m.vertices[tri[1]];
       const point& c = m.vertices[tri[2]];
@@ -112,7 +113,14 @@ verification_report verify_impl_run(const triangle_mesh& m, const pslg& d, const
       flags[t] = f;
     }
   });
-  for (std::size_t t = 0; t < nt; ++t) {
+  return flags;
+}
+
+inline void report_triangles(const triangle_mesh& m, const std::vector<std::uint8_t>& flags,
+                             violation_sink& sink) {
+  using verify_impl::str;
+  verification_report& r = sink.r;
+  for (std::size_t t = 0; t < flags.size(); ++t) {
     if (flags[t] == 0) continue;
     const auto& tri = m.triangles[t];
     const auto name = [&] {
@@ -123,42 +131,48 @@ verification_report verify_impl_run(const triangle_mesh& m, const pslg& d, const
              str(m.vertices[tri[2]]);
     };
     if (flags[t] & tri_malformed)
-      report(r.orientation_violations, [&] { return name() + ": bad vertex indices"; });
+      sink.add(r.orientation_violations, [&] { return name() + ": bad vertex indices"; });
     if (flags[t] & tri_orientation)
-      report(r.orientation_violations, [&] { return name() + ": clockwise or degenerate"; });
-    if (flags[t] & tri_quality) {
-      report(r.quality_violations, [&] {
+      sink.add(r.orientation_violations, [&] { return name() + ": clockwise or degenerate"; });
+    if (flags[t] & tri_quality)
+      sink.add(r.quality_violations, [&] {
         const auto& v = m.vertices;
         const auto ang = triangle_angles_deg(v[tri[0]], v[tri[1]], v[tri[2]]);
         return name() + ": smallest angle " + std::to_string(std::min({ang[0], ang[1], ang[2]})) +
                " deg";
       });
-    }
     if (flags[t] & tri_area)
-      report(r.area_violations, [&] { return name() + ": area above the bound"; });
+      sink.add(r.area_violations, [&] { return name() + ": area above the bound"; });
   }
+}
 
-  // Duplicate vertices (hashing the coordinates; the first vertex at a place wins).
-  vi::vertex_lookup lookup;
-  lookup.reserve(nv);
-  for (std::size_t v = 0; v < nv; ++v) {
+/// Finds coinciding vertices; returns the coordinates -> first vertex table.
+inline verify_impl::vertex_lookup report_duplicates(const triangle_mesh& m, violation_sink& sink) {
+  verify_impl::vertex_lookup lookup;
+  lookup.reserve(m.vertices.size());
+  for (std::size_t v = 0; v < m.vertices.size(); ++v) {
     const auto [it, inserted] = lookup.emplace(m.vertices[v], static_cast<index_t>(v));
     if (!inserted)
-      report(r.duplicate_vertices, [&] {
+      sink.add(sink.r.duplicate_vertices, [&] {
         return "vertex " + std::to_string(v) + " duplicates vertex " + std::to_string(it->second) +
-               " at " + str(m.vertices[v]);
+               " at " + verify_impl::str(m.vertices[v]);
       });
   }
+  return lookup;
+}
 
-  // Edges: conformity and the Delaunay property of interior edges.
-  vi::edge_table table(m, valid);
-  auto& edges = table.edges();
-  std::vector<std::uint8_t> edge_flags(edges.size(), 0); // 1 nonmanifold, 2 not Delaunay
+/// Per-edge results, in parallel: 1 nonmanifold (in > 2 triangles, or twice in the same
+/// direction), 2 not locally Delaunay (exact side_of_bounded_circle), 0 otherwise.
+inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
+                                             const verify_impl::edge_table& table) {
+  namespace vi = verify_impl;
+  const auto& edges = table.edges();
+  std::vector<std::uint8_t> flags(edges.size(), 0);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 1024), [&](const auto& rg) {
     for (std::size_t k = rg.begin(); k != rg.end(); ++k) {
       const vi::edge_record& e = edges[k];
       if (e.count > 2 || (e.count == 2 && e.forward[0] == e.forward[1])) {
-        edge_flags[k] = 1;
+        flags[k] = 1;
         continue;
       }
       if (e.count != 2) continue;
@@ -172,62 +186,96 @@ verification_report verify_impl_run(const triangle_mesh& m, const pslg& d, const
       const auto s0 = vi::to_cgal(m.vertices[apex(e.tri[0])]);
       const auto s1 = vi::to_cgal(m.vertices[apex(e.tri[1])]);
       if (CGAL::orientation(p, q, s0) == CGAL::COLLINEAR) continue; // reported as degenerate
-      if (CGAL::side_of_bounded_circle(p, q, s0, s1) == CGAL::ON_BOUNDED_SIDE) edge_flags[k] = 2;
+      if (CGAL::side_of_bounded_circle(p, q, s0, s1) == CGAL::ON_BOUNDED_SIDE) flags[k] = 2;
     }
   });
+  return flags;
+}
 
-  // Input segments: chains of mesh edges between the mesh vertices at their endpoints.
+/// Walks every input segment along mesh edges (marking them) and reports those that fail.
+inline void report_segments(const triangle_mesh& m, const pslg& d,
+                            const verify_impl::vertex_lookup& lookup,
+                            verify_impl::edge_table& table, violation_sink& sink) {
+  namespace vi = verify_impl;
+  const auto find = [&](index_t v) {
+    if (v >= d.vertices.size()) return vi::none;
+    const auto it = lookup.find(d.vertices[v]);
+    return it == lookup.end() ? vi::none : it->second;
+  };
   std::vector<index_t> path;
   for (std::size_t s = 0; s < d.segments.size(); ++s) {
     const segment& sg = d.segments[s];
-    const auto find = [&](index_t v) {
-      if (v >= d.vertices.size()) return vi::none;
-      const auto it = lookup.find(d.vertices[v]);
-      return it == lookup.end() ? vi::none : it->second;
-    };
     const index_t ma = find(sg.a), mb = find(sg.b);
-    if (ma == vi::none || mb == vi::none || ma == mb || !vi::walk_segment(table, m, ma, mb, path))
-      report(r.missing_segments, [&] {
-        std::string msg = "segment " + std::to_string(s) + " (" + std::to_string(sg.a) + ", " +
-                          std::to_string(sg.b) + ")";
-        if (sg.a < d.vertices.size() && sg.b < d.vertices.size())
-          msg += " from " + str(d.vertices[sg.a]) + " to " + str(d.vertices[sg.b]);
-        return msg + ": not a union of mesh edges";
-      });
+    if (ma != vi::none && mb != vi::none && ma != mb && vi::walk_segment(table, m, ma, mb, path))
+      continue;
+    sink.add(sink.r.missing_segments, [&] {
+      std::string msg = "segment " + std::to_string(s) + " (" + std::to_string(sg.a) + ", " +
+                        std::to_string(sg.b) + ")";
+      if (sg.a < d.vertices.size() && sg.b < d.vertices.size())
+        msg += " from " + vi::str(d.vertices[sg.a]) + " to " + vi::str(d.vertices[sg.b]);
+      return msg + ": not a union of mesh edges";
+    });
   }
+}
 
+/// Reports nonmanifold edges, boundary edges on no segment and non-Delaunay edges.
+inline void report_edges(const triangle_mesh& m, const verify_impl::edge_table& table,
+                         const std::vector<std::uint8_t>& flags, violation_sink& sink) {
+  namespace vi = verify_impl;
+  verification_report& r = sink.r;
+  const auto& edges = table.edges();
   for (std::size_t k = 0; k < edges.size(); ++k) {
     const vi::edge_record& e = edges[k];
     const auto name = [&] {
       return "edge (" + std::to_string(e.a) + ", " + std::to_string(e.b) + ") from " +
-             str(m.vertices[e.a]) + " to " + str(m.vertices[e.b]);
+             vi::str(m.vertices[e.a]) + " to " + vi::str(m.vertices[e.b]);
     };
-    if (edge_flags[k] == 1)
-      report(r.nonmanifold_edges, [&] {
+    if (flags[k] == 1)
+      sink.add(r.nonmanifold_edges, [&] {
         return name() + ": in " + std::to_string(e.count) + " triangles" +
                (e.count == 2 ? " with the same direction" : "");
       });
     else if (e.count == 1 && !e.on_segment)
-      report(r.nonmanifold_edges, [&] { return name() + ": boundary edge on no input segment"; });
-    if (edge_flags[k] == 2)
-      report(r.delaunay_violations, [&] {
+      sink.add(r.nonmanifold_edges, [&] { return name() + ": boundary edge on no input segment"; });
+    if (flags[k] == 2)
+      sink.add(r.delaunay_violations, [&] {
         return name() + ": not locally Delaunay (triangles " + std::to_string(e.tri[0]) + ", " +
                std::to_string(e.tri[1]) + ")";
       });
   }
+}
 
-  // Areas: deterministic reduction of the triangle areas.
-  r.area_mesh = tbb::parallel_deterministic_reduce(
-      tbb::blocked_range<std::size_t>(0, nt, 4096), 0.0,
+/// Sum of the areas of the well-formed triangles: a deterministic parallel reduction.
+inline double mesh_area(const triangle_mesh& m, const std::vector<std::uint8_t>& flags) {
+  return tbb::parallel_deterministic_reduce(
+      tbb::blocked_range<std::size_t>(0, m.triangles.size(), 4096), 0.0,
       [&](const auto& rg, double acc) {
         for (std::size_t t = rg.begin(); t != rg.end(); ++t)
-          if (valid[t]) {
+          if (!(flags[t] & tri_malformed)) {
             const auto& tri = m.triangles[t];
             acc += triangle_area(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
           }
         return acc;
       },
       std::plus<double>());
+}
+
+template <class AreaBound>
+verification_report verify_run(const triangle_mesh& m, const pslg& d, const verify_options& o,
+                               const AreaBound& bound_at) {
+  verification_report r;
+  violation_sink sink{r, o.max_reported};
+  const std::vector<std::uint8_t> tri_flags = check_triangles(m, o, bound_at);
+  report_triangles(m, tri_flags, sink);
+  const verify_impl::vertex_lookup lookup = report_duplicates(m, sink);
+  std::vector<char> valid(tri_flags.size());
+  for (std::size_t t = 0; t < valid.size(); ++t)
+    valid[t] = !(tri_flags[t] & tri_malformed);
+  verify_impl::edge_table table(m, valid);
+  const std::vector<std::uint8_t> edge_flags = check_edges(m, table);
+  report_segments(m, d, lookup, table, sink);
+  report_edges(m, table, edge_flags, sink);
+  r.area_mesh = mesh_area(m, tri_flags);
   r.area_domain = domain_area(d);
   r.area_ok = std::abs(r.area_mesh - r.area_domain) <= o.area_tolerance * std::abs(r.area_domain);
   if (!r.area_ok && r.messages.size() < o.max_reported)
@@ -258,8 +306,8 @@ verification_report verify_impl_run(const triangle_mesh& m, const pslg& d, const
 template <SizingField S>
 verification_report verify(const triangle_mesh& m, const pslg& d, const verify_options& o,
                            const S& sizing) {
-  return detail::verify_impl_run(
-      m, d, o, [&](const point& p) { return static_cast<double>(sizing.area_at(p)); });
+  return detail::verify_run(m, d, o,
+                            [&](const point& p) { return static_cast<double>(sizing.area_at(p)); });
 }
 
 /// Verifies a mesh against the criteria alone (area bound o.criteria.max_area). \see verify

@@ -81,62 +81,7 @@ private:
       sizing_criteria<dm::cdt, S> crit(c.shape_bound(), c.max_area, sizing);
       dm::refine(tr, crit);
     }
-    return extract(tr, d, vh);
-  }
-
-  static mesher_result extract(detail::cgal_mesh::cdt& tr, const pslg& d,
-                               const std::vector<detail::cgal_mesh::vertex_handle>& vh) {
-    namespace dm = detail::cgal_mesh;
-    const dm::segment_table table(d);
-    const auto marker_of = [&](index_t s) { return s == dm::none ? 0 : d.segments[s].marker; };
-    mesher_result r;
-    triangle_mesh& m = r.mesh;
-    const std::size_t n = d.vertices.size();
-    m.vertices.reserve(tr.number_of_vertices());
-    m.vertex_markers.reserve(tr.number_of_vertices());
-    m.vertices = d.vertices;
-    m.vertex_markers = d.vertex_markers;
-    m.vertex_markers.resize(n, 0);
-    auto next = static_cast<index_t>(n);
-    for (auto v = tr.finite_vertices_begin(); v != tr.finite_vertices_end(); ++v) {
-      dm::vertex_info& info = v->info();
-      if (info.id != dm::none) continue;
-      info.id = next++;
-      m.vertices.push_back({v->point().x(), v->point().y()});
-      m.vertex_markers.push_back(
-          info.seg_a == dm::none ? 0 : marker_of(table.find(info.seg_a, info.seg_b)));
-    }
-    if (tr.dimension() == 2) {
-      m.triangles.reserve(tr.number_of_faces());
-      for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
-        if (f->is_in_domain())
-          m.triangles.push_back(
-              {f->vertex(0)->info().id, f->vertex(1)->info().id, f->vertex(2)->info().id});
-      m.triangle_markers.assign(m.triangles.size(), 0);
-      for (auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
-        const auto& [f, i] = *e;
-        if (!f->is_constrained(i) || !(f->is_in_domain() || f->neighbor(i)->is_in_domain()))
-          continue;
-        const dm::vertex_info& a = f->vertex(dm::cdt::cw(i))->info();
-        const dm::vertex_info& b = f->vertex(dm::cdt::ccw(i))->info();
-        const index_t s = a.seg_a != dm::none   ? table.find(a.seg_a, a.seg_b)
-                          : b.seg_a != dm::none ? table.find(b.seg_a, b.seg_b)
-                                                : table.find(a.id, b.id);
-        m.segments.push_back({std::min(a.id, b.id), std::max(a.id, b.id), marker_of(s)});
-      }
-      std::sort(m.segments.begin(), m.segments.end(), [](const mesh_edge& x, const mesh_edge& y) {
-        return x.a != y.a ? x.a < y.a : x.b < y.b;
-      });
-    }
-    // A split segment's two halves may meet at a rounded midpoint slightly off the line, so
-    // its endpoints can still be joined by an (unconstrained) edge: test the constraint.
-    for (std::size_t s = 0; s < d.segments.size(); ++s) {
-      dm::face_handle f;
-      int i = 0;
-      if (!tr.is_edge(vh[d.segments[s].a], vh[d.segments[s].b], f, i) || !f->is_constrained(i))
-        r.split_segments.push_back(static_cast<index_t>(s));
-    }
-    return r;
+    return dm::extract(tr, d, vh);
   }
 };
 
