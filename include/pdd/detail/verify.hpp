@@ -13,7 +13,6 @@
 #include <bit>
 #include <cmath>
 #include <cstdint>
-#include <cstring>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -75,6 +74,7 @@ public:
         halves[fill[std::min(u, v)]++] = {std::max(u, v), static_cast<index_t>(t), u < v};
       }
     }
+    edges_.reserve(halves.size() / 2 + 16);
     for (index_t a = 0; a < nv; ++a) {
       auto first = halves.begin() + start[a], last = halves.begin() + start[a + 1];
       std::sort(first, last,
