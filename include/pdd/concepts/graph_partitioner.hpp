@@ -10,8 +10,13 @@
 /// Semantics: both parts are non-empty when g has at least two vertices; the result is a
 /// deterministic function of (g, o); the heavier part weighs at most o.max_part_fraction of
 /// the total when that is achievable (a best effort otherwise). Parts need not be connected:
-/// the library repairs disconnected parts (dissertation 5.1), the partitioner does not have to.
-/// Models: pdd::metis_partitioner (default when METIS is found), pdd::boost_partitioner.
+/// the library repairs disconnected parts (pdd::connected_bisection, dissertation 5.1), the
+/// partitioner does not have to. Thread-safety: MADD bisects several regions at once, so
+/// `bisect` may be called concurrently on different graphs; a model must be reentrant or
+/// serialise itself (pdd::metis_partitioner does), and its result must not depend on timing.
+/// Models: pdd::metis_partitioner (default when METIS is found, partition/metis.hpp),
+/// pdd::boost_partitioner (partition/boost_partitioner.hpp); pdd::default_partitioner names
+/// the default (partition/default_partitioner.hpp).
 #pragma once
 
 #include <boost/graph/adjacency_list.hpp>
