@@ -162,7 +162,7 @@ inline verify_impl::vertex_lookup report_duplicates(const triangle_mesh& m, viol
 }
 
 /// Per-edge results, in parallel: 1 nonmanifold (in > 2 triangles, or twice in the same
-/// direction), 2 not locally Delaunay (exact side_of_bounded_circle), 0 otherwise.
+/// direction), 2 not locally Delaunay (exact in-circle test), 0 otherwise.
 inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
                                              const verify_impl::edge_table& table) {
   namespace vi = verify_impl;
@@ -185,8 +185,13 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
       const auto p = vi::to_cgal(m.vertices[e.a]), q = vi::to_cgal(m.vertices[e.b]);
       const auto s0 = vi::to_cgal(m.vertices[apex(e.tri[0])]);
       const auto s1 = vi::to_cgal(m.vertices[apex(e.tri[1])]);
-      if (CGAL::orientation(p, q, s0) == CGAL::COLLINEAR) continue; // reported as degenerate
-      if (CGAL::side_of_bounded_circle(p, q, s0, s1) == CGAL::ON_BOUNDED_SIDE) flags[k] = 2;
+      // Strictly inside the circle through p, q, s0 (side_of_oriented_circle has a static
+      // filter in Epick; side_of_bounded_circle does not).
+      const CGAL::Orientation o = CGAL::orientation(p, q, s0);
+      if (o == CGAL::COLLINEAR) continue; // reported as a degenerate triangle
+      const auto side = o == CGAL::LEFT_TURN ? CGAL::side_of_oriented_circle(p, q, s0, s1)
+                                             : CGAL::side_of_oriented_circle(q, p, s0, s1);
+      if (side == CGAL::ON_POSITIVE_SIDE) flags[k] = 2;
     }
   });
   return flags;
@@ -288,7 +293,7 @@ verification_report verify_run(const triangle_mesh& m, const pslg& d, const veri
 
 /// Verifies a mesh of the domain of d (dissertation sec. 1.1 requirements, DESIGN.md
 /// "Correctness invariants"): every interior edge is locally Delaunay (exact
-/// side_of_bounded_circle: the opposite apex is not strictly inside the circumcircle); every
+/// side_of_oriented_circle: the opposite apex is not strictly inside the circumcircle); every
 /// triangle is counter-clockwise and non-degenerate (exact orientation); no two vertices
 /// coincide; every input segment is a union of mesh edges (a chain from the mesh vertex at
 /// one endpoint to the one at the other through vertices on the segment, see
