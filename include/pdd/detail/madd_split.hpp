@@ -57,7 +57,8 @@ struct madd_split_result {
   std::size_t repairs = 0;
   std::size_t smoothing_moves = 0;
   std::size_t levels_tried = 0;
-  std::string failure; ///< why there is no split (when !ok)
+  bool fallback = false; ///< algorithm 1 found nothing, algorithm 2 split the region
+  std::string failure;   ///< why there is no split (when !ok)
 };
 
 /// Part of every cell for a part of every node.
@@ -369,6 +370,18 @@ madd_split_result split_region(const madd_region& r, const madd_split_options& o
     if (!best.ok || cur.max_fraction < best.max_fraction) best = std::move(cur);
     if (best.max_fraction <= o.imbalance_bound) break;
     stop_level = std::min(stop_level, level + 1 + o.extra_levels);
+  }
+  if (!best.ok && o.graph.algorithm == 1) {
+    // Algorithm 1 cuts only through junction triangles; an exactly symmetric boundary (a
+    // refined square: every Delaunay triangle right-angled) has none at any level. The
+    // second algorithm's Delaunay-edge separators split such regions.
+    madd_split_options o2 = o;
+    o2.graph.algorithm = 2;
+    madd_split_result r2 = split_region(r, o2, partitioner);
+    r2.levels_tried += best.levels_tried;
+    r2.fallback = true;
+    if (!r2.ok) r2.failure = best.failure + "; algorithm 2: " + r2.failure;
+    return r2;
   }
   return best;
 }

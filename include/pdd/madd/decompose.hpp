@@ -46,6 +46,7 @@ inline void check_madd_options(const madd_options& o) {
   if (!(o.max_part_fraction >= 0.5 && o.max_part_fraction <= 1.0))
     bad("max_part_fraction must be in [0.5, 1]");
   if (!(o.max_subdomain_area > 0.0)) bad("max_subdomain_area must be positive");
+  if (!(o.round_fraction > 0.0 && o.round_fraction <= 1.0)) bad("round_fraction must be in (0, 1]");
   if (!std::isfinite(o.max_subdomain_area) && o.subdomains < 1) bad("subdomains must be >= 1");
 }
 
@@ -138,7 +139,16 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
                  " vertices): " + why[i];
       throw decomposition_error(msg);
     }
-    if (!by_area) order.resize(std::min(order.size(), o.subdomains - regions.size()));
+    // Split together only what a sequential largest-first loop would split next: regions
+    // of at least round_fraction times the largest area (their children are smaller than
+    // that as long as splits are balanced to round_fraction, so no child would be split
+    // before them).
+    const double cut = o.round_fraction * regions[order[0]].area;
+    std::size_t take = 0;
+    while (take < order.size() && regions[order[take]].area >= cut)
+      ++take;
+    if (!by_area) take = std::min(take, o.subdomains - regions.size());
+    order.resize(take);
     std::vector<detail::madd_split_result> res(order.size());
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, order.size(), [&](std::size_t k) {
@@ -163,7 +173,10 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
         ++st.splits;
         st.repairs += r.repairs;
         st.smoothing_moves += r.smoothing_moves;
+        st.algorithm_fallbacks += r.fallback ? 1 : 0;
         st.boundary_points += r.z_points;
+        st.mean_split_fraction += r.max_fraction;
+        st.max_split_fraction = std::max(st.max_split_fraction, r.max_fraction);
         if (st.splits_per_level.size() <= static_cast<std::size_t>(r.level))
           st.splits_per_level.resize(r.level + 1, 0);
         ++st.splits_per_level[r.level];
@@ -185,6 +198,7 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
     why = std::move(next_why);
     detail::apply_edge_splits(regions, std::move(reg));
   }
+  if (st.splits > 0) st.mean_split_fraction /= static_cast<double>(st.splits);
   decomposition d = detail::assemble_decomposition(regions);
   if (stats) {
     st.time_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -29,8 +29,9 @@ struct madd_options {
   /// another separator is >= Phi0 (criterion C1; 60 for Ruppert-type meshers).
   double min_separator_angle_deg = 60.0;
   /// 1: the first MADD algorithm (3.4, Algorithms 3.1-3.3: separators through circumcentres
-  /// of junction triangles only); 2: the second (3.5, Algorithms 3.4-3.6: Delaunay edges
-  /// with good angles as well).
+  /// of junction triangles only; a subdomain where it finds none at any refinement level, as
+  /// an exactly symmetric one whose Delaunay triangles are all right-angled, is split by the
+  /// second); 2: the second (3.5, Algorithms 3.4-3.6: Delaunay edges with good angles too).
   int algorithm = 2;
   /// When finite: split (largest first) until every subdomain's area is at most this;
   /// `subdomains` is then ignored (3.7).
@@ -52,6 +53,11 @@ struct madd_options {
   double imbalance_bound = 0.75;
   /// The balance bound given to the graph partitioner (bisection_options).
   double max_part_fraction = 0.55;
+  /// A round of concurrent splits (4.3) takes the subdomains whose area is at least this
+  /// fraction of the largest (largest first, N - count at most): 1 splits one subdomain at a
+  /// time, the sequential largest-first order of 3.7; smaller values give more concurrency
+  /// and, below the splits' balance, a less even decomposition.
+  double round_fraction = 0.6;
   /// Worker threads for the concurrent splits (4.3); 0: all. The result does not depend on it.
   unsigned threads = 0;
 };
@@ -78,6 +84,12 @@ struct decomposition_statistics {
   std::size_t smoothing_moves = 0; ///< nodes moved by the local search (4.2)
   std::size_t boundary_points = 0; ///< |Z| summed over the successful splits
   std::size_t levels_tried = 0;    ///< refinement levels tried, summed over all splits
+  /// Splits where algorithm 1 found no separator at any level and algorithm 2 was used
+  /// (exactly symmetric boundaries have no junction triangles).
+  std::size_t algorithm_fallbacks = 0;
+  /// Larger child area / parent area: mean and maximum over the splits.
+  double mean_split_fraction = 0.0;
+  double max_split_fraction = 0.0;
   /// splits_per_level[l]: successful splits that used refinement level l (r 2^l).
   std::vector<std::size_t> splits_per_level;
 };
