@@ -109,12 +109,13 @@ inline double estimate_triangles(double domain_area, const mesh_criteria& criter
 
 /// The automatic number of subdomains for an expected mesh of E triangles on P threads.
 ///
-/// The kernel's cost per triangle grows with the size of what it meshes (CGAL 5.5 on one core:
-/// about 2.7-4 us/triangle for 20-75K triangles, 5.5 at 250K, 6.2-6.4 at 1-4M; DESIGN.md
-/// measured 3.5 us at 245K and 10-15 us at 4-16M), so even one thread gains from meshing
-/// small subdomains; the dissertation's rule (6.4) is N >= E / 1.6M for Triangle, whose curve
-/// is much flatter. We take N = max(ceil(E / target), min_per_thread * P) (the second term
-/// only for P > 1: over-decomposition for load balance, 6.4), capped at E / min_triangles, and
+/// The kernel's cost per triangle grows with the size of what it meshes (pdd::cgal::mesher
+/// with its heap queue, one core, unit square: 1.7 us/triangle at 19K triangles, 1.8 at 75K,
+/// 2.2 at 250K, 2.9 at 1M, 3.5 at 4M), so even one thread gains from meshing small subdomains
+/// (key domain, 4.5M triangles, one thread: 17.1 s monolithic, 5.0-5.2 s with N = 75-220,
+/// MADD 30-50 ms); the dissertation's rule (6.4) is N >= E / 1.6M for Triangle, whose curve is
+/// much flatter. We take N = max(ceil(E / target), min_per_thread * P) (the second term only
+/// for P > 1: over-decomposition for load balance, 6.4), capped at E / min_triangles, and
 /// N = 1 (the kernel on the whole domain) when that leaves fewer than 2 subdomains or E is
 /// not finite (no area bound). target = o.target_subdomain_triangles (default 60K),
 /// min_per_thread = o.min_subdomains_per_thread (4), min_triangles = o.min_subdomain_triangles

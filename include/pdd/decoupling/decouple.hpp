@@ -40,22 +40,22 @@ namespace detail {
 
 /// lfs_min of every subdomain's loops (without split points), computed concurrently.
 ///
-/// Why the minimum over subdomains serves as lfs_min(D_H) (Definition 1: the minimum distance
-/// between two non-incident entities):
-/// - Every entity (vertex or segment) of a subdomain boundary B_i is an entity of D_H with the
-///   same incidences, so lfs_min(B_i) >= lfs_min(D_H) for every i.
-/// - The proofs use lfs_min one subdomain at a time: Proposition 12 and Theorem 15 apply
-///   Theorem 1 to each B_i with its split points, and Lemma 11's argument (a split point is at
-///   least lfs_min from non-incident entities and sin 60 * 2k/sqrt 3 = k from incident ones)
-///   runs unchanged inside one B_i. So k <= min_i lfs_min(B_i) is all the guarantee needs.
-/// - The two values differ only when the closest non-incident pair of D_H is not visible
-///   inside one subdomain. Across a separator this cannot make the per-subdomain value
-///   smaller than needed: if the segment pq joining the closest points crosses a separator
-///   segment s at r, then s is an entity of both boundaries, and s with p (or with q) is a pair
-///   at most |pr| (|rq|) < |pq| apart unless s is incident to it; the remaining incident
-///   configurations are bounded by the >= 60 deg separator angles as in Lemma 11. What remains
-///   is a pair closest across a hole or the outside of the domain, which the kernel, meshing
-///   each subdomain alone, never sees.
+/// Why min_i lfs_min(B_i) is the right value for lfs_min(D_H) in eq. 6.1. pdd::lfs_min is
+/// Definition 7: the minimum distance between two non-incident entities (vertices, segments)
+/// whose connecting segment lies in the closed domain.
+/// - lfs_min(B_i) >= lfs_min(D_H) for every subdomain boundary B_i: its entities are entities
+///   of D_H with the same incidences, and a connecting segment inside D_i lies inside the
+///   domain, so every pair counted for B_i is counted for D_H.
+/// - The proofs only need the per-subdomain values: Proposition 12 and Theorem 15 apply
+///   Theorem 1 to each B_i (with its split points) on its own, and Lemma 11's argument (a split
+///   point is >= lfs_min away from non-incident entities and >= sin 60 * 2k/sqrt 3 = k from
+///   incident ones) runs unchanged inside one B_i. So k <= min_i lfs_min(B_i) is sufficient.
+/// - The values coincide when a closest pair of D_H is joined inside one subdomain. A pair
+///   joined across a separator segment s = uv is not closer than pairs of one subdomain: s
+///   itself (on both boundaries) is nearer to each end unless both entities are incident to
+///   s, one at u and one at v, where the >= 60 deg angles bound the distance as in Lemma 11
+///   (two 60 deg corners give equality). Pairs across holes do not count in Definition 7, and
+///   the kernel, meshing each subdomain alone, never sees the other side of a separator.
 template <Executor E>
 std::vector<double> subdomain_lfs(const decomposition& d, const E& ex) {
   const std::size_t m = d.subdomains.size();
