@@ -3,6 +3,7 @@
 /// and a MADD decomposition, for inspection in a browser.
 #pragma once
 
+#include <pdd/detail/io_mesh.hpp>
 #include <pdd/detail/io_svg.hpp>
 #include <pdd/detail/io_text.hpp>
 #include <pdd/errors.hpp>
