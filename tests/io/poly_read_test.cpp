@@ -281,8 +281,21 @@ TEST(PolyRead, GarbageNeverCrashes) {
       ++errors;
     }
   }
+  // Valid prefixes followed by random bytes (NUL, high bytes, '#', newlines).
+  const std::string valid = square_vertices + square_rest;
+  for (int round = 0; round < 2000; ++round) {
+    std::string text = valid.substr(0, rng() % valid.size());
+    for (int i = static_cast<int>(rng() % 12); i > 0; --i)
+      text += static_cast<char>(rng() % 256);
+    try {
+      (void)parse(text);
+      ++parsed;
+    } catch (const pdd::input_error&) {
+      ++errors;
+    }
+  }
   EXPECT_GT(errors, 0);
-  EXPECT_EQ(parsed + errors, 3000);
+  EXPECT_EQ(parsed + errors, 5000);
 }
 
 TEST(PolyRead, SharedGeometriesMatchTheReadme) {
