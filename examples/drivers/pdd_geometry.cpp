@@ -36,8 +36,8 @@ int main(int argc, char** argv) {
     pdd::validate(g);
     pdd::write_poly(output, g);
     if (!svg.empty()) pdd::write_svg(svg, g);
-    std::printf("pdd-geometry: wrote %s (%zu vertices, %zu segments, %zu holes)\n",
-                output.c_str(), g.vertices.size(), g.segments.size(), g.holes.size());
+    std::printf("pdd-geometry: wrote %s (%zu vertices, %zu segments, %zu holes)\n", output.c_str(),
+                g.vertices.size(), g.segments.size(), g.holes.size());
     return 0;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pdd-geometry: error: %s\n", e.what());

@@ -1,0 +1,53 @@
+// Benchmark of the default CGAL kernel alone (not a test): meshes a bundled model domain at a
+// target triangle count and prints one JSON line with triangles, seconds, microseconds per
+// triangle and peak RSS. Run one size per process so that peak RSS is per run:
+//
+//   bench_kernel key|pipe TARGET_TRIANGLES [MIN_ANGLE_DEG]
+//
+// benchmarks/run_kernel.sh runs the table in benchmarks/results/kernel.md.
+#include <pdd/detail/system.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/model_domains.hpp>
+#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/mesh/quality.hpp>
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <string>
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: %s key|pipe TARGET_TRIANGLES [MIN_ANGLE_DEG]\n", argv[0]);
+    return 2;
+  }
+  const std::string name = argv[1];
+  const double target = std::atof(argv[2]);
+  const pdd::pslg domain = name == "key" ? pdd::key_domain() : pdd::pipe_domain();
+  pdd::mesh_criteria criteria;
+  if (argc > 3) criteria.min_angle_deg = std::atof(argv[3]);
+  // CGAL's meshes at an area bound A have a mean triangle area of about 0.55 A.
+  criteria.max_area = pdd::domain_area(domain) / target / 0.55;
+
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto result =
+      pdd::cgal::mesher{}.mesh(domain, criteria, pdd::uniform_sizing{criteria.max_area});
+  const double seconds = pdd::detail::seconds_since(t0);
+  const auto st = pdd::compute_statistics(result.mesh);
+
+  nlohmann::json j;
+  j["domain"] = name;
+  j["max_area"] = criteria.max_area;
+  j["min_angle_bound_deg"] = criteria.min_angle_deg;
+  j["triangles"] = st.triangles;
+  j["vertices"] = st.vertices;
+  j["seconds"] = seconds;
+  j["us_per_triangle"] = 1e6 * seconds / static_cast<double>(st.triangles);
+  j["min_angle_deg"] = st.min_angle_deg;
+  j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
+  std::cout << j.dump() << std::endl;
+  return 0;
+}
