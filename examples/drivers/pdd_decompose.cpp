@@ -1,0 +1,139 @@
+// pdd-decompose: Medial Axis Domain Decomposition (dissertation ch. 3-5) of a Triangle .poly
+// domain into N subdomains whose separators meet the boundary and each other at >= Phi0.
+//
+//   pdd-decompose INPUT.poly --subdomains N [--min-separator-angle DEG] [--algorithm 1|2]
+//                 [--threads T] [--no-smoothing] [--max-refinement-levels L]
+//                 [--svg FILE.svg] [--stats FILE.json] [-o FILE.pdd] [--quiet]
+//
+// -o writes the decomposition in pdd's text format (include/pdd/io/decomposition_io.hpp),
+// which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
+// be decomposed, 2 usage, 3 the decomposition failed its own check, 4 internal error.
+#include <pdd/detail/system.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/properties.hpp>
+#include <pdd/io/atomic_file.hpp>
+#include <pdd/io/decomposition_io.hpp>
+#include <pdd/io/poly.hpp>
+#include <pdd/io/svg.hpp>
+#include <pdd/madd/decompose.hpp>
+#include <pdd/madd/validate_decomposition.hpp>
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+namespace {
+
+struct cli_options {
+  std::string input, output, svg, stats;
+  pdd::madd_options madd;
+  bool no_smoothing = false, quiet = false;
+};
+
+int run(cli_options o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const pdd::pslg domain = pdd::read_poly(o.input);
+  const pdd::pslg_properties props = pdd::analyze(domain); // validates
+  o.madd.smoothing = !o.no_smoothing;
+  if (!o.quiet && pdd::detail::stderr_is_terminal())
+    std::fprintf(stderr, "\r\033[Kpdd-decompose: decomposing into %zu subdomains",
+                 o.madd.subdomains);
+  pdd::decomposition_statistics st;
+  const pdd::decomposition d = pdd::decompose(domain, o.madd, pdd::default_partitioner{}, &st);
+  if (!o.quiet && pdd::detail::stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
+  const pdd::decomposition_report check =
+      pdd::validate_decomposition(d, domain, {.min_angle_deg = o.madd.min_separator_angle_deg});
+
+  if (!o.output.empty()) pdd::write_decomposition(o.output, d);
+  if (!o.svg.empty()) pdd::write_svg(o.svg, d);
+  const double total = pdd::detail::seconds_since(t0);
+  if (!o.stats.empty()) {
+    std::vector<double> lengths = st.separator_length_per_subdomain;
+    std::sort(lengths.begin(), lengths.end());
+    nlohmann::json j;
+    j["input"] = o.input;
+    j["subdomains"] = st.subdomains;
+    j["algorithm"] = o.madd.algorithm;
+    j["min_separator_angle_deg"] = st.min_separator_angle_deg;
+    j["separator_length_total"] = st.separator_length_total;
+    j["separator_length_per_subdomain_median"] =
+        lengths.empty() ? 0.0 : lengths[lengths.size() / 2];
+    j["max_area_over_mean"] = st.max_area_over_mean;
+    j["min_area_over_mean"] = st.min_area_over_mean;
+    j["area_domain"] = props.area;
+    j["area_sum"] = check.area_sum;
+    j["splits"] = st.splits;
+    j["repairs"] = st.repairs;
+    j["smoothing_moves"] = st.smoothing_moves;
+    j["valid"] = check.ok();
+    j["time_s"] = st.time_s;
+    j["total_s"] = total;
+    j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
+    pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
+  }
+  if (!o.quiet) {
+    std::printf("pdd-decompose: %zu subdomains, min separator angle %.2f deg, max area / mean "
+                "%.3f, separator length %.6g, %.3f s\n",
+                st.subdomains, st.min_separator_angle_deg, st.max_area_over_mean,
+                st.separator_length_total, st.time_s);
+    for (const std::string* f : {&o.output, &o.svg, &o.stats})
+      if (!f->empty()) std::printf("pdd-decompose: wrote %s\n", f->c_str());
+  }
+  if (!check.ok()) {
+    std::fprintf(stderr, "pdd-decompose: the decomposition failed its check:\n%s",
+                 check.summary().c_str());
+    return 3;
+  }
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  cli_options o;
+  CLI::App app{"pdd-decompose: Medial Axis Domain Decomposition of a Triangle .poly domain"};
+  app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
+  app.add_option("-n,--subdomains", o.madd.subdomains, "number of subdomains N")
+      ->required()
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--min-separator-angle", o.madd.min_separator_angle_deg,
+                 "Phi0: smallest angle a separator may form, degrees (default 60)")
+      ->check(CLI::Range(1.0, 89.0));
+  app.add_option("--algorithm", o.madd.algorithm, "MADD algorithm: 1 (3.4) or 2 (3.5, default)")
+      ->check(CLI::IsMember({1, 2}));
+  app.add_option("--threads", o.madd.threads, "threads (default: all cores)")
+      ->check(CLI::Range(1u, 4096u));
+  app.add_option("--max-refinement-levels", o.madd.max_refinement_levels,
+                 "dynamic refinement budget (levels r, 2r, 4r, ...)")
+      ->check(CLI::Range(1, 30));
+  app.add_flag("--no-smoothing", o.no_smoothing, "switch separator smoothing (4.2) off");
+  app.add_option("-o,--output", o.output, "write the decomposition (pdd text format)");
+  app.add_option("--svg", o.svg, "draw the domain and the separators to this SVG file");
+  app.add_option("--stats", o.stats, "write statistics as JSON to this file");
+  app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? 0 : 2;
+  }
+  try {
+    return run(o);
+  } catch (const pdd::input_error& e) {
+    std::fprintf(stderr, "pdd-decompose: error: %s\n", e.what());
+    return 1;
+  } catch (const pdd::geometry_error& e) {
+    std::fprintf(stderr, "pdd-decompose: error: %s: %s\n", o.input.c_str(), e.what());
+    return 1;
+  } catch (const pdd::decomposition_error& e) {
+    std::fprintf(stderr, "pdd-decompose: error: %s: cannot decompose: %s\n", o.input.c_str(),
+                 e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
+    return 4;
+  }
+}
