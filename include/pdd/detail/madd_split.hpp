@@ -347,6 +347,15 @@ madd_split_result split_region(const madd_region& r, const madd_split_options& o
     const madd_triangulation tr = triangulate_region(r, h, o.max_encroachment_depth);
     madd_graph g = build_madd_graph(tr, o.graph);
     madd_split_result cur;
+    if (o.graph.algorithm == 1 && g.junctions == 0) {
+      // No junction triangle at all (an exactly symmetric boundary, e.g. a refined square,
+      // has only right-angled Delaunay triangles at every level): use algorithm 2's
+      // Delaunay-edge separators on this triangulation.
+      madd_graph_options go = o.graph;
+      go.algorithm = 2;
+      g = build_madd_graph(tr, go);
+      cur.fallback = true;
+    }
     cur.level = level;
     cur.z_points = tr.z.size();
     cur.junctions = g.junctions;

@@ -29,9 +29,10 @@ struct madd_options {
   /// another separator is >= Phi0 (criterion C1; 60 for Ruppert-type meshers).
   double min_separator_angle_deg = 60.0;
   /// 1: the first MADD algorithm (3.4, Algorithms 3.1-3.3: separators through circumcentres
-  /// of junction triangles only; a subdomain where it finds none at any refinement level, as
-  /// an exactly symmetric one whose Delaunay triangles are all right-angled, is split by the
-  /// second); 2: the second (3.5, Algorithms 3.4-3.6: Delaunay edges with good angles too).
+  /// of junction triangles only; where a triangulation has no junction triangle at all, as
+  /// an exactly symmetric subdomain whose Delaunay triangles are all right-angled, or no
+  /// level gives a separator, the second algorithm splits that subdomain); 2: the second (3.5,
+  /// Algorithms 3.4-3.6: Delaunay edges with good angles too).
   int algorithm = 2;
   /// When finite: split (largest first) until every subdomain's area is at most this;
   /// `subdomains` is then ignored (3.7).
