@@ -45,7 +45,8 @@ int main() {
   for (int j = 0; j < h; ++j)
     for (int i = 0; i < w; ++i)
       if (inside(i, j)) {
-        id[j * w + i] = static_cast<int>(boost::add_vertex(pdd::partition_vertex{1.0}, g));
+        id[j * w + i] = static_cast<int>(boost::add_vertex(g));
+        g[id[j * w + i]].weight = 1.0;
         by_x.x.push_back(i + 0.5);
       }
   for (int j = 0; j < h; ++j)

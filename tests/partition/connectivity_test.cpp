@@ -51,9 +51,16 @@ struct wrong_size_partitioner {
   }
 };
 
-// The test graphs: 200 holey grids and 40 MADD-like duals (all connected).
-partition_graph test_graph(std::uint64_t i) {
-  return i < 200 ? random_holey_grid(1000 + i) : madd_like_graph(60 + 10 * (i - 200), 0.5, i);
+// The test graphs, built once: 200 holey grids and 40 MADD-like duals (all connected).
+const std::vector<partition_graph>& test_graphs() {
+  static const std::vector<partition_graph> graphs = [] {
+    std::vector<partition_graph> out;
+    for (std::uint64_t i = 0; i < 240; ++i)
+      out.push_back(i < 200 ? random_holey_grid(1000 + i)
+                            : madd_like_graph(60 + 10 * (i - 200), 0.5, i));
+    return out;
+  }();
+  return graphs;
 }
 
 struct family_result {
@@ -65,12 +72,14 @@ template <class P>
 family_result check_family(const P& p, const char* name) {
   family_result r;
   for (std::uint64_t i = 0; i < 240; ++i) {
-    const partition_graph g = test_graph(i);
+    const partition_graph& g = test_graphs()[i];
     const pdd::bisection_options o{.max_part_fraction = 0.55, .seed = i};
     const auto part = pdd::connected_bisection(g, p, o);
     EXPECT_EQ(part.size(), boost::num_vertices(g));
     EXPECT_EQ(connected_nonempty_parts(g, part), 2) << name << " graph " << i;
-    EXPECT_EQ(pdd::connected_bisection(g, p, o), part) << name << " graph " << i;
+    if (i % 4 == 0) { // determinism
+      EXPECT_EQ(pdd::connected_bisection(g, p, o), part) << name << " graph " << i;
+    }
     const auto w = pdd::part_weights(g, part);
     if (std::max(w[0], w[1]) > 0.55 * (w[0] + w[1])) ++r.unbalanced;
     const auto raw = p.bisect(g, o);

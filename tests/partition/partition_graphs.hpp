@@ -106,7 +106,10 @@ inline partition_graph largest_component(const partition_graph& g) {
   std::vector<std::size_t> id(comp.size(), 0);
   partition_graph out;
   for (std::size_t v = 0; v < comp.size(); ++v)
-    if (comp[v] == keep) id[v] = boost::add_vertex(partition_vertex{g[v].weight}, out);
+    if (comp[v] == keep) {
+      id[v] = boost::add_vertex(out);
+      out[id[v]].weight = g[v].weight;
+    }
   for (const auto e : boost::make_iterator_range(boost::edges(g))) {
     const std::size_t u = boost::source(e, g), v = boost::target(e, g);
     if (comp[u] == keep && comp[v] == keep) add(out, id[u], id[v], g[e].weight);
@@ -206,7 +209,7 @@ inline partition_graph madd_like_graph(std::size_t n, double contract_fraction,
   std::vector<std::size_t> vid(area.size(), static_cast<std::size_t>(-1));
   partition_graph out;
   for (std::size_t i = 0; i < area.size(); ++i)
-    if (find(i) == i) vid[i] = boost::add_vertex(partition_vertex{0.0}, out);
+    if (find(i) == i) vid[i] = boost::add_vertex(out);
   for (std::size_t i = 0; i < area.size(); ++i)
     out[vid[find(i)]].weight += area[i];
   for (const dual_edge& e : edges)

@@ -186,6 +186,17 @@ TYPED_TEST(Partitioner, DisconnectedAndEdgelessGraphs) {
   EXPECT_EQ(std::count(part.begin(), part.end(), 1), 18);
 }
 
+TYPED_TEST(Partitioner, ZeroVertexAndEdgeWeights) {
+  partition_graph g = grid_graph(10, 10); // odd columns weigh nothing; every third edge too
+  for (std::size_t v = 0; v < 100; ++v)
+    g[v].weight = v % 2 ? 0.0 : 1.0;
+  std::size_t i = 0;
+  for (const auto e : boost::make_iterator_range(boost::edges(g)))
+    g[e].weight = i++ % 3 ? 1.0 : 0.0;
+  for (const double f : {0.5, 0.55})
+    checked_cut(g, TypeParam{}.bisect(g, {.max_part_fraction = f}), f);
+}
+
 TYPED_TEST(Partitioner, ExtremeWeightsNeitherOverflowNorVanish) {
   // Cliques of weight-1e15 edges joined by a 1e-15 bridge; vertex weights 1e15 and 1e-15.
   partition_graph g = two_cliques(10, 1e-15, 1e15);
