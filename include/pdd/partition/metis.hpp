@@ -47,14 +47,16 @@ inline std::mutex& metis_mutex() {
 /// positive weight to at least 1; zero edge weights become 1 since METIS needs positive edge
 /// weights); METIS's imbalance bound is 2 max_part_fraction; the result is then polished by FM
 /// passes on the real weights, which only lower (excess over the bound, cut). Graphs of at most
-/// 12 vertices are bisected exactly by enumeration instead (METIS is unreliable on tiny graphs).
+/// 12 vertices are bisected exactly by enumeration instead (optimal, and clear of METIS's
+/// corner cases on tiny graphs).
 struct metis_partitioner {
   /// METIS entry point. On MADD-like graphs (duals of Delaunay triangulations with 200-3000
-  /// vertices, weights = areas and lengths) k-way gave 1-3% lower cuts than recursive
-  /// bisection at the same ncuts (measurements in tests/partition/README.md).
+  /// vertices, weights = areas and lengths) and on random holey grids k-way gave 1-3% lower
+  /// mean cuts than recursive bisection at the same ncuts; on plain grids they were within 1%
+  /// (measurements in tests/partition/README.md).
   metis_scheme scheme = metis_scheme::kway;
-  /// METIS_OPTION_NCUTS: independent METIS runs, the best kept (>= 1); 4 lowers the cut by
-  /// about 5% against 1, at about twice the time.
+  /// METIS_OPTION_NCUTS: independent METIS runs, the best kept (>= 1); 4 lowered the mean cut
+  /// by 1-9% against 1, at about twice the time.
   int ncuts = 4;
 
   /// Bisects g: part[v] is 0 or 1, both parts non-empty when g has >= 2 vertices; balance as
