@@ -290,3 +290,24 @@ TEST(MaddDecompose, SharedDataFiles) {
 }
 
 } // namespace
+
+namespace {
+
+TEST(MaddDecompose, PipeThousandWaysOnOneCore) {
+  // Performance goal: N = 1024 on the pipe cross-section in under a second on one core
+  // (Release). The bound asserted here is loose so that busy or instrumented builds pass;
+  // the measured time is recorded.
+  const auto g = pdd::pipe_domain();
+  pdd::decomposition_statistics st;
+  const auto d =
+      pdd::decompose(g, {.subdomains = 1024, .threads = 1}, pdd::default_partitioner{}, &st);
+  expect_valid(d, g, 1024);
+  RecordProperty("time_s", std::to_string(st.time_s));
+  std::printf("pipe N=1024, one thread: %.3f s, %zu boundary points, max/mean area %.3f\n",
+              st.time_s, st.boundary_points, st.max_area_over_mean);
+  EXPECT_LT(st.time_s, 20.0);
+  EXPECT_LT(st.max_area_over_mean, 2.5);
+  EXPECT_GE(st.min_separator_angle_deg, 60.0 - 1e-9);
+}
+
+} // namespace
