@@ -132,6 +132,15 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "pdd-decompose: error: %s: cannot decompose: %s\n", o.input.c_str(),
                  e.what());
     return 1;
+  } catch (const pdd::internal_error& e) {
+    std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
+    return 4;
+  } catch (const pdd::meshing_error& e) {
+    std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
+    return 4;
+  } catch (const pdd::error& e) { // files that cannot be read or written
+    std::fprintf(stderr, "pdd-decompose: error: %s\n", e.what());
+    return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
     return 4;

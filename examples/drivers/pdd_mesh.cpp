@@ -288,6 +288,15 @@ int main(int argc, char** argv) {
   } catch (const pdd::decomposition_error& e) {
     std::fprintf(stderr, "pdd-mesh: error: %s: cannot decompose: %s\n", o.input.c_str(), e.what());
     return bad_input;
+  } catch (const pdd::internal_error& e) {
+    std::fprintf(stderr, "pdd-mesh: internal error: %s\n", e.what());
+    return internal;
+  } catch (const pdd::meshing_error& e) {
+    std::fprintf(stderr, "pdd-mesh: internal error: %s\n", e.what());
+    return internal;
+  } catch (const pdd::error& e) { // files that cannot be read or written
+    std::fprintf(stderr, "pdd-mesh: error: %s\n", e.what());
+    return bad_input;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "pdd-mesh: internal error: %s\n", e.what());
     return internal;

@@ -55,6 +55,7 @@ public:
         tokens_.push_back(t);
       if (!tokens_.empty()) return;
     }
+    ++line_; // the line that is missing
     fail(std::string("unexpected end of file, expected ") + expected);
   }
   void expect_count(std::size_t n, const char* what) const {

@@ -1,0 +1,212 @@
+// End-to-end tests of the command-line drivers: exit codes, messages, statistics, outputs.
+#include <pdd/io/decomposition_io.hpp>
+#include <pdd/io/poly.hpp>
+#include <pdd/madd/validate_decomposition.hpp>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "test_support.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct run_result {
+  int code;
+  std::string output; // stdout and stderr together
+};
+
+run_result run(const std::string& exe, const std::string& args) {
+  const std::string cmd = "'" + exe + "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return {-1, "popen failed"};
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p))
+    out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+nlohmann::json read_json(const fs::path& p) {
+  std::ifstream in(p);
+  return nlohmann::json::parse(in);
+}
+
+std::string write_text(const std::string& name, const std::string& text) {
+  const fs::path p = pdd::test::temp_path(name);
+  std::ofstream(p) << text;
+  return p.string();
+}
+
+const std::string key_poly = pdd::test::bundled_data("key.poly").string();
+const std::string pipe_poly = pdd::test::bundled_data("pipe.poly").string();
+
+} // namespace
+
+TEST(PddMesh, MonolithicWithStatsVerifyAndOutputs) {
+  const auto stats = pdd::test::temp_path("s.json"), vtu = pdd::test::temp_path("m.vtu"),
+             svg = pdd::test::temp_path("m.svg");
+  const auto r =
+      run(PDD_MESH_EXE, key_poly + " --max-area 0.002 --subdomains 1 --verify --stats " +
+                            stats.string() + " -o " + vtu.string() + " --svg " + svg.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("verification passed"), std::string::npos);
+  const auto j = read_json(stats);
+  for (const char* k :
+       {"triangles", "vertices", "min_angle_deg", "max_ratio", "max_area_ratio", "area_domain",
+        "area_mesh", "delaunay_violations", "interface_splits", "conforming", "timings",
+        "peak_rss_mib", "subdomains", "threads", "remeshed_subdomains"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  for (const char* k : {"read", "decompose", "decouple", "mesh", "merge", "write", "total"})
+    EXPECT_TRUE(j["timings"].contains(k)) << k;
+  EXPECT_EQ(j["subdomains"], 1);
+  EXPECT_EQ(j["delaunay_violations"], 0);
+  EXPECT_EQ(j["conforming"], true);
+  EXPECT_GE(j["min_angle_deg"].get<double>(), 20.7 - 1e-9);
+  EXPECT_LE(j["max_area_ratio"].get<double>(), 1.0 + 1e-12);
+  EXPECT_NEAR(j["area_mesh"].get<double>(), j["area_domain"].get<double>(),
+              1e-9 * j["area_domain"].get<double>());
+  EXPECT_GT(fs::file_size(vtu), 1000u);
+  EXPECT_GT(fs::file_size(svg), 1000u);
+}
+
+TEST(PddMesh, DecoupledMatchesAcrossThreadCounts) {
+  const auto a = pdd::test::temp_path("t1.vtu"), b = pdd::test::temp_path("t2.vtu"),
+             stats = pdd::test::temp_path("s.json");
+  const auto r1 = run(PDD_MESH_EXE, pipe_poly +
+                                        " --max-area 1e-4 --subdomains 16 --threads 1 -q "
+                                        "--verify -o " +
+                                        a.string() + " --stats " + stats.string());
+  ASSERT_EQ(r1.code, 0) << r1.output;
+  const auto j = read_json(stats);
+  EXPECT_EQ(j["subdomains"], 16);
+  EXPECT_EQ(j["interface_splits"], 0);
+  EXPECT_EQ(j["conforming"], true);
+  EXPECT_GE(j["min_separator_angle_deg"].get<double>(), 60.0 - 1e-9);
+  const auto r2 = run(
+      PDD_MESH_EXE, pipe_poly + " --max-area 1e-4 --subdomains 16 --threads 2 -q -o " + b.string());
+  ASSERT_EQ(r2.code, 0) << r2.output;
+  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+  const std::string sa((std::istreambuf_iterator<char>(fa)), {}),
+      sb((std::istreambuf_iterator<char>(fb)), {});
+  EXPECT_EQ(sa, sb) << "output differs between 1 and 2 threads";
+}
+
+TEST(PddMesh, PerSubdomainOutputAndOverRefinement) {
+  const auto dir = pdd::test::temp_path("pieces"), stats = pdd::test::temp_path("s.json");
+  fs::remove_all(dir);
+  const auto r = run(PDD_MESH_EXE, key_poly +
+                                       " --max-area 0.001 --subdomains 8 -q "
+                                       "--compare-monolithic --output-per-subdomain " +
+                                       dir.string() + " --stats " + stats.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "mesh.pvtu"));
+  for (int i = 0; i < 8; ++i)
+    EXPECT_TRUE(fs::exists(dir / ("subdomain_" + std::to_string(i) + ".vtu"))) << i;
+  const auto j = read_json(stats);
+  EXPECT_TRUE(j.contains("over_refinement_pct"));
+  EXPECT_LT(std::abs(j["over_refinement_pct"].get<double>()), 10.0);
+}
+
+TEST(PddMesh, ExitCodesAndMessages) {
+  // usage
+  EXPECT_EQ(run(PDD_MESH_EXE, "").code, 2);
+  EXPECT_EQ(run(PDD_MESH_EXE, key_poly + " --max-area -1").code, 2);
+  EXPECT_EQ(run(PDD_MESH_EXE, key_poly + " --no-such-option").code, 2);
+  // bad input: the message names file:line
+  const auto bad = write_text("bad.poly", "4 2 0 0\n1 0 0\n2 1 zero\n");
+  auto r = run(PDD_MESH_EXE, bad);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("bad.poly:3:"), std::string::npos) << r.output;
+  // missing file
+  EXPECT_EQ(run(PDD_MESH_EXE, "/nonexistent/x.poly").code, 1);
+  // invalid geometry names the ids: a bow tie (crossing segments)
+  const auto bow = write_text("bow.poly", "4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n"
+                                          "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
+  r = run(PDD_MESH_EXE, bow);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("segment"), std::string::npos) << r.output;
+  // small input angle refused with the vertex and the angle
+  const auto wedge = write_text("wedge.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
+                                              "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
+  r = run(PDD_MESH_EXE, wedge);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("vertex 0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("below 60"), std::string::npos) << r.output;
+}
+
+TEST(PddMesh, FailedRunLeavesNoOutputFile) {
+  const auto out = pdd::test::temp_path("never.vtu");
+  fs::remove(out);
+  const auto bad = write_text("trunc.poly", "4 2 0 0\n1 0 0\n");
+  EXPECT_EQ(run(PDD_MESH_EXE, bad + " -o " + out.string()).code, 1);
+  EXPECT_FALSE(fs::exists(out));
+  // an output directory that does not exist: error, and no file anywhere
+  const auto r = run(PDD_MESH_EXE, key_poly + " --max-area 0.01 -o /nonexistent/dir/m.vtu");
+  EXPECT_NE(r.code, 0);
+  EXPECT_FALSE(fs::exists("/nonexistent/dir/m.vtu"));
+}
+
+TEST(PddDecompose, WritesReadableDecompositionAndStats) {
+  const auto file = pdd::test::temp_path("d.pdd"), stats = pdd::test::temp_path("d.json"),
+             svg = pdd::test::temp_path("d.svg");
+  const auto r =
+      run(PDD_DECOMPOSE_EXE, pipe_poly + " --subdomains 7 -q -o " + file.string() + " --stats " +
+                                 stats.string() + " --svg " + svg.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto j = read_json(stats);
+  for (const char* k : {"subdomains", "min_separator_angle_deg", "separator_length_total",
+                        "max_area_over_mean", "time_s"})
+    EXPECT_TRUE(j.contains(k)) << k;
+  EXPECT_EQ(j["subdomains"], 7);
+  EXPECT_GE(j["min_separator_angle_deg"].get<double>(), 60.0 - 1e-9);
+  const pdd::decomposition d = pdd::read_decomposition(file);
+  EXPECT_EQ(d.subdomains.size(), 7u);
+  const auto rep = pdd::validate_decomposition(d, pdd::read_poly(pipe_poly));
+  EXPECT_TRUE(rep.ok()) << rep.summary();
+  // writing it again gives the same bytes
+  const auto again = pdd::test::temp_path("d2.pdd");
+  pdd::write_decomposition(again, d);
+  std::ifstream fa(file), fb(again);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(fa)), {}),
+            std::string((std::istreambuf_iterator<char>(fb)), {}));
+}
+
+TEST(PddDecompose, UsageAndBadInput) {
+  EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly).code, 2); // --subdomains is required
+  EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly + " -n 4 --algorithm 3").code, 2);
+  const auto bad = write_text("bad.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 9\n");
+  const auto r = run(PDD_DECOMPOSE_EXE, bad + " -n 4");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.output.find("bad.poly:7:"), std::string::npos) << r.output;
+}
+
+TEST(DecompositionFormat, MalformedFilesNameTheLine) {
+  const auto check = [](const std::string& text, const std::string& where) {
+    const auto p = write_text("bad.pdd", text);
+    try {
+      (void)pdd::read_decomposition(p);
+      ADD_FAILURE() << "accepted: " << text;
+    } catch (const pdd::input_error& e) {
+      EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
+    }
+  };
+  check("pdd-decomposition 2\n", "bad.pdd:1:");
+  check("pdd-decomposition 1\nvertices 3\n0 0 0\n1 0 0\n", "bad.pdd:5:");
+  check("pdd-decomposition 1\nvertices 1\n0 x 0\n", "bad.pdd:3:");
+  check("pdd-decomposition 1\nvertices 3\n0 0 0\n1 0 0\n0 1 0\nsubdomains 1\nsubdomain 0.5 1\n"
+        "loop 3\n0 e 0 1\n1 e 1 1\n7 e 2 1\n",
+        "bad.pdd:11:");
+  check("pdd-decomposition 1\nvertices 3\n0 0 0\n1 0 0\n0 1 0\nsubdomains 1\nsubdomain 0.5 1\n"
+        "loop 3\n0 e 0 1\n1 q 1 1\n2 e 2 1\n",
+        "bad.pdd:10:");
+}
