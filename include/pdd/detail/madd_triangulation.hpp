@@ -211,6 +211,7 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
     if (!encroached) continue;
     madd_zvertex m;
     m.p = canonical_midpoint(z[u].p, z[w].p);
+    if (m.p == z[u].p || m.p == z[w].p) continue; // a piece of a few ulps: cannot bisect
     m.loop = z[u].loop;
     m.edge = z[u].edge;
     m.original = false;
