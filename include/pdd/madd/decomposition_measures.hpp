@@ -5,7 +5,7 @@
 
 #include <pdd/detail/madd_region.hpp>
 #include <pdd/madd/decomposition.hpp>
-#include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/decomposition_statistics.hpp>
 
 #include <algorithm>
 #include <cmath>
