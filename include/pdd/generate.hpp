@@ -48,6 +48,8 @@ generate_result generate(const pslg& domain, const generate_options& options = {
                          const M& mesher = {}, const P& partitioner = {}) {
   const auto t0 = std::chrono::steady_clock::now();
   pipeline<M, P, E> pl(domain, options, mesher, partitioner);
+  pl.template check_memory<merge_sink>(); // up front, before any work
+  pl.decouple();                          // MADD and the decoupling path (none when N == 1)
   generate_result r;
   if (pl.subdomains() <= 1) {
     // The kernel's own output is the result: no copy through a sink.
@@ -55,11 +57,9 @@ generate_result generate(const pslg& domain, const generate_options& options = {
     const auto tm = std::chrono::steady_clock::now();
     r.mesh = pl.mesh_whole();
     generate_statistics& st = pl.statistics();
-    st.subdomains = 1;
     st.timings.mesh = detail::seconds_since(tm);
     st.triangles = r.mesh.triangles.size();
   } else {
-    pl.template check_memory<merge_sink>();
     merge_sink sink(options.threads);
     pl.mesh(sink);
     r.mesh = sink.take();

@@ -177,6 +177,36 @@ TEST(Generate, RefusesMeshesThatDoNotFitInMemory) {
   EXPECT_THROW(pdd::generate(d, o), pdd::limit_error);
 }
 
+TEST(Generate, AutomaticPlanFallsBackWhenASmallFeatureHoldsKDown) {
+  // A unit square with a notch 1e-5 wide: lfs_min = 1e-5 bounds k (eq. 6.1), so the uniform
+  // path would put ~1e5 points on every separator. The automatic plan decomposes, sees the
+  // path's size and meshes the whole domain instead; a requested N is honoured.
+  pdd::pslg d;
+  d.add_loop(
+      std::vector<pdd::point>{
+          {0, 0}, {1, 0}, {1, 1}, {0.50001, 1}, {0.50001, 0.5}, {0.5, 0.5}, {0.5, 1}, {0, 1}},
+      1);
+  pdd::generate_options o;
+  o.criteria.max_area = 5e-5; // about 30K triangles: automatic N = 6 on two threads
+  o.threads = 2;
+  pdd::pipeline pl(d, o);
+  ASSERT_GT(pl.subdomains(), 1u);
+  pl.decouple();
+  EXPECT_TRUE(pl.statistics().monolithic_fallback);
+  EXPECT_EQ(pl.subdomains(), 1u);
+  EXPECT_EQ(pl.statistics().k, 0.0);
+  const auto r = pdd::generate(d, o);
+  EXPECT_TRUE(r.statistics.monolithic_fallback);
+  const auto k = pdd::cgal::mesher{}.mesh(d, o.criteria, pdd::uniform_sizing{});
+  EXPECT_TRUE(bitwise_equal(r.mesh, k.mesh));
+  o.subdomains = 2;
+  pdd::pipeline forced(d, o);
+  const auto& dd = forced.decouple();
+  EXPECT_FALSE(forced.statistics().monolithic_fallback);
+  EXPECT_LE(dd.k, 1e-5 * (1 + 1e-9));
+  EXPECT_GT(dd.num_split_points(), 10000u);
+}
+
 TEST(Pipeline, Stages) {
   pdd::generate_options o;
   o.criteria.max_area = 5e-4;
