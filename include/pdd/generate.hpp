@@ -80,6 +80,7 @@ generate_statistics generate(const pslg& domain, const generate_options& options
                              const M& mesher = {}, const P& partitioner = {}) {
   const auto t0 = std::chrono::steady_clock::now();
   pipeline<M, P, E> pl(domain, options, mesher, partitioner);
+  pl.template check_memory<S>(); // up front, before any work
   pl.mesh(sink);
   generate_statistics st = std::move(pl.statistics());
   st.timings.total = detail::seconds_since(t0);
