@@ -20,6 +20,7 @@
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/mesh/criteria.hpp>
 #include <pdd/mesh/triangle_mesh.hpp>
