@@ -21,10 +21,10 @@ struct mesh_edge {
 /// that lie on input segments with their segment markers.
 struct triangle_mesh {
   std::vector<point> vertices;
-  std::vector<int> vertex_markers;                ///< same size as vertices
-  std::vector<std::array<index_t, 3>> triangles;  ///< counter-clockwise
-  std::vector<int> triangle_markers;              ///< same size as triangles
-  std::vector<mesh_edge> segments;                ///< mesh edges on input segments
+  std::vector<int> vertex_markers;               ///< same size as vertices
+  std::vector<std::array<index_t, 3>> triangles; ///< counter-clockwise
+  std::vector<int> triangle_markers;             ///< same size as triangles
+  std::vector<mesh_edge> segments;               ///< mesh edges on input segments
 
   std::size_t num_vertices() const noexcept { return vertices.size(); }
   std::size_t num_triangles() const noexcept { return triangles.size(); }
