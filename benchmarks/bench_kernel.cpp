@@ -10,6 +10,7 @@
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
+#include <pdd/pipeline.hpp>
 
 #include <nlohmann/json.hpp>
 
@@ -29,8 +30,8 @@ int main(int argc, char** argv) {
   const pdd::pslg domain = name == "key" ? pdd::key_domain() : pdd::pipe_domain();
   pdd::mesh_criteria criteria;
   if (argc > 3) criteria.min_angle_deg = std::atof(argv[3]);
-  // CGAL's meshes at an area bound A have a mean triangle area of about 0.55 A.
-  criteria.max_area = pdd::domain_area(domain) / target / 0.55;
+  // Quality meshes at an area bound A have a mean triangle area of about 0.656 A.
+  criteria.max_area = pdd::domain_area(domain) / target / pdd::mean_triangle_area_fraction;
 
   const auto t0 = std::chrono::steady_clock::now();
   const auto result =
@@ -45,6 +46,7 @@ int main(int argc, char** argv) {
   j["triangles"] = st.triangles;
   j["vertices"] = st.vertices;
   j["seconds"] = seconds;
+  j["cpu_seconds"] = pdd::detail::cpu_seconds();
   j["us_per_triangle"] = 1e6 * seconds / static_cast<double>(st.triangles);
   j["min_angle_deg"] = st.min_angle_deg;
   j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
