@@ -22,7 +22,6 @@ else
   echo "note: $data/bahamas_islands.poly not found, bahamas skipped" >&2
 fi
 out="$build/madd.jsonl"
-: >"$out"
 # CPU time of the whole machine (/proc/stat) and of this script's children (/proc/$$/stat),
 # in clock ticks, to state how busy the other users kept the machine during the runs.
 machine_busy() { awk '/^cpu /{print $2+$3+$4+$7+$8+$9}' /proc/stat; }
@@ -30,11 +29,11 @@ own_busy() { awk '{print $16+$17}' "/proc/$$/stat"; }
 busy0=$(machine_busy); own0=$(own_busy); start=$(date +%s.%N)
 for d in "${domains[@]}"; do
   for n in 16 64 256 1024; do
-    "$bench" "$d" madd "$n" 1 "$repeats" >>"$out"
-    "$bench" "$d" madd "$n" 2 "$repeats" >>"$out"
-    "$bench" "$d" metis "$n" 1 "$repeats" >>"$out"
+    "$bench" "$d" madd "$n" 1 "$repeats"
+    "$bench" "$d" madd "$n" 2 "$repeats"
+    "$bench" "$d" metis "$n" 1 "$repeats"
   done
-done
+done >"$out"
 
 others=$(awk -v b0="$busy0" -v b1="$(machine_busy)" -v o0="$own0" -v o1="$(own_busy)" \
   -v t0="$start" -v t1="$(date +%s.%N)" -v hz="$(getconf CLK_TCK)" \
