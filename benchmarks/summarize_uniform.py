@@ -8,16 +8,17 @@ for domain in sorted({r['domain'] for r in rows}):
     mono = next(r for r in rs if r['label'] == 'monolithic')
     print(f"\n### {domain}: monolithic {mono['triangles']:,} triangles, "
           f"{mono['timings']['total']:.2f} s, peak RSS {mono['peak_rss_mib']:.0f} MiB\n")
-    print('| N | threads | triangles | over-refinement % | decompose s | decouple s | mesh s '
+    print('| run | N | threads | triangles | over-refinement % | decompose s | decouple s | mesh s '
           '| merge s | total s | speed-up vs monolithic | peak RSS MiB | min angle |')
-    print('|---|---|---|---|---|---|---|---|---|---|---|---|')
+    print('|---|---|---|---|---|---|---|---|---|---|---|---|---|')
     for r in rs:
         t = r['timings']
         over = 100.0 * (r['triangles'] / mono['triangles'] - 1.0)
-        print(f"| {r['subdomains']} | {r['threads']} | {r['triangles']:,} | {over:+.3f} | "
+        angle = f"{r['min_angle_deg']:.2f}" if 'min_angle_deg' in r else 'n/a'
+        print(f"| {r['label']} | {r['subdomains']} | {r['threads']} | {r['triangles']:,} | {over:+.3f} | "
               f"{t['decompose']:.3f} | {t['decouple']:.3f} | {t['mesh']:.2f} | {t['merge']:.2f} | "
               f"{t['total']:.2f} | {mono['timings']['total'] / t['total']:.2f}x | "
-              f"{r['peak_rss_mib']:.0f} | {r['min_angle_deg']:.2f} |")
+              f"{r['peak_rss_mib']:.0f} ({100 * r['peak_rss_mib'] / mono['peak_rss_mib']:.0f}%) | {angle} |")
     # angle histograms (5-degree buckets, % of all angles): monolithic vs the largest N, 2 threads
     dec = [r for r in rs if r['label'] == 'decoupled']
     if dec and 'angle_histogram_deg' in mono:
