@@ -18,6 +18,7 @@
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <CLI/CLI.hpp>
@@ -109,12 +110,8 @@ int run(const cli_options& o) {
   bar.stage("reading input");
   const pdd::pslg domain = pdd::read_poly(o.input);
   const pdd::pslg_properties props = pdd::analyze(domain); // validates, throws geometry_error
-  if (props.min_angle_deg < 60.0)
-    throw pdd::geometry_error("the input angle at vertex " +
-                                  std::to_string(props.min_angle_vertex) + " is " +
-                                  std::to_string(props.min_angle_deg) +
-                                  " deg; input angles below 60 deg are not supported yet",
-                              {props.min_angle_vertex});
+  // Input angles below 60 deg are shielded (dissertation 8.1): each becomes one shielded
+  // triangle whose smallest angle is the input angle; the quality bound holds elsewhere.
   const double t_read = pdd::detail::seconds_since(t_start);
 
   pdd::generate_options g;
@@ -145,13 +142,18 @@ int run(const cli_options& o) {
   }
 
   std::optional<pdd::mesh_statistics> st;
+  std::optional<pdd::shielding_statistics> sst;
   std::optional<pdd::verification_report> report;
   if (mesh) {
     bar.stage("statistics");
     st = pdd::compute_statistics(*mesh, sizing);
+    sst = pdd::compute_shielding_statistics(*mesh, domain);
     if (o.verify) {
       bar.stage("verifying");
-      report = pdd::verify(*mesh, domain, pdd::verify_options{.criteria = g.criteria}, sizing);
+      pdd::verify_options vo{.criteria = g.criteria};
+      // shielded triangles keep their input angle: exempt from the quality check only
+      vo.quality_exempt = pdd::find_shielded_triangles(*mesh, domain);
+      report = pdd::verify(*mesh, domain, vo, sizing);
     }
   }
   std::optional<std::size_t> monolithic_triangles;
@@ -184,6 +186,13 @@ int run(const cli_options& o) {
     j["area_domain"] = props.area;
     j["min_input_angle_deg"] = props.min_angle_deg;
     j["lfs_min"] = props.lfs_min;
+    j["shielded_triangles"] = gs.shielded_triangles;
+    j["shield_splits"] = gs.shield_splits;
+    if (sst) {
+      j["min_angle_unshielded_deg"] = sst->min_angle_unshielded_deg;
+      j["max_ratio_unshielded"] = sst->max_ratio_unshielded;
+      j["max_ratio_shielded"] = sst->max_ratio_shielded;
+    }
     if (st) {
       j["min_angle_deg"] = st->min_angle_deg;
       j["max_angle_deg"] = st->max_angle_deg;
@@ -222,6 +231,10 @@ int run(const cli_options& o) {
     if (st)
       std::printf("pdd-mesh: min angle %.3f deg, max area / bound %.4f\n", st->min_angle_deg,
                   st->max_area_ratio);
+    if (sst && gs.shielded_triangles > 0)
+      std::printf("pdd-mesh: %zu shielded triangles (input angles down to %.3f deg), min angle "
+                  "of the others %.3f deg\n",
+                  gs.shielded_triangles, sst->min_input_angle_deg, sst->min_angle_unshielded_deg);
     if (mesh && !o.output.empty()) std::printf("pdd-mesh: wrote %s\n", o.output.c_str());
     if (!o.per_subdomain_dir.empty())
       std::printf("pdd-mesh: wrote %s/mesh.pvtu and %zu subdomain files\n",

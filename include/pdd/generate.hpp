@@ -36,8 +36,9 @@ struct generate_result {
 /// the same for every thread count.
 /// \tparam M a DelaunayMesher (default pdd::cgal::mesher). \tparam P a GraphPartitioner
 /// (default METIS when found). \tparam E an Executor (default pdd::tbb_executor).
-/// \pre `domain` is valid (pdd::validate); input angles >= 60 deg for the method's guarantee
-/// (smaller ones are left to the kernel and the invariance check).
+/// \pre `domain` is valid (pdd::validate). Input angles < 60 deg are shielded (dissertation
+/// 8.1, pdd::shield / pdd::shield_decomposition): each becomes one shielded triangle of the
+/// mesh, with the input angle as its smallest angle; every other triangle meets the criteria.
 /// \throws pdd::geometry_error (invalid domain), pdd::limit_error (the mesh would not fit in
 /// memory: the message has the estimate), pdd::decomposition_error (MADD), pdd::meshing_error
 /// (kernel, with the subdomain id), pdd::decoupling_error (invariance repairs exhausted).
@@ -55,7 +56,7 @@ generate_result generate(const pslg& domain, const generate_options& options = {
     // The kernel's own output is the result: no copy through a sink.
     pl.template check_memory<merge_sink>();
     const auto tm = std::chrono::steady_clock::now();
-    r.mesh = pl.mesh_whole();
+    r.mesh = pl.mesh_whole(pl.statistics().shielded_triangles);
     generate_statistics& st = pl.statistics();
     st.timings.mesh = detail::seconds_since(tm);
     st.triangles = r.mesh.triangles.size();

@@ -53,5 +53,10 @@
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/partition/metis.hpp>
 #include <pdd/pipeline.hpp>
+#include <pdd/shielding/apply_shields.hpp>
+#include <pdd/shielding/shield.hpp>
+#include <pdd/shielding/shield_decomposition.hpp>
+#include <pdd/shielding/shield_statistics.hpp>
+#include <pdd/shielding/shield_triangle.hpp>
 #include <pdd/sizing/analytic.hpp>
 #include <pdd/sizing/uniform.hpp>

@@ -27,6 +27,9 @@
 #include <pdd/parallel/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
+#include <pdd/shielding/apply_shields.hpp>
+#include <pdd/shielding/shield.hpp>
+#include <pdd/shielding/shield_decomposition.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <algorithm>
@@ -93,6 +96,9 @@ struct generate_statistics {
   double shortest_separator = 0.0;  ///< L (0 when N == 1)
   std::size_t split_points = 0;     ///< vertices inserted on the separators
   std::size_t interface_splits = 0; ///< interface pieces the kernel split (should be 0)
+  /// Input angles < 60 deg shielded (dissertation 8.1): shielded triangles in the mesh.
+  std::size_t shielded_triangles = 0;
+  std::size_t shield_splits = 0; ///< shield edges the kernel split (0; a split one throws)
   std::size_t remeshed_subdomains = 0;
   std::size_t repair_rounds = 0;
   /// The automatic plan decomposed the domain but fell back to N = 1 because the decoupling
@@ -256,8 +262,18 @@ public:
     decompose();
     const auto t0 = std::chrono::steady_clock::now();
     if (stats_.subdomains > 1) {
+      // Algorithm 8.2: shield the small angles of every subdomain; k then comes from the
+      // shielded subdomains D_i' (Theorem 24 (3)).
+      std::vector<subdomain_shields> shields;
+      if (detail::has_small_angles(decomposition_))
+        shields = shield_decomposition(decomposition_, options_.criteria.max_area, executor_,
+                                       unshielded_k());
       decoupling_options dopt{options_.criteria, options_.k_override, options_.k_scale};
       decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
+      decoupled_decomposition_.shields.resize(shields.size());
+      for (std::size_t s = 0; s < shields.size(); ++s)
+        decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);
+      stats_.shielded_triangles = decoupled_decomposition_.num_shielded_triangles();
       stats_.k = decoupled_decomposition_.k;
       stats_.lfs_min = decoupled_decomposition_.lfs_min;
       stats_.shortest_separator = decoupled_decomposition_.shortest_separator;
@@ -284,7 +300,7 @@ public:
     detail::timed_sink<S> timed{sink};
     if (stats_.subdomains <= 1) {
       timed.start(1);
-      triangle_mesh m = mesh_whole();
+      triangle_mesh m = mesh_whole(stats_.shielded_triangles);
       stats_.triangles = m.triangles.size();
       timed.consume(0, std::move(m));
       timed.finish();
@@ -294,6 +310,8 @@ public:
                           mesher_, executor_, timed);
       stats_.triangles = ms.triangles();
       stats_.interface_splits = ms.interface_splits;
+      stats_.shield_splits = ms.shield_splits;
+      stats_.shielded_triangles = decoupled_decomposition_.num_shielded_triangles();
       stats_.remeshed_subdomains = ms.remeshed_subdomains;
       stats_.repair_rounds = ms.repair_rounds;
       stats_.split_points = decoupled_decomposition_.num_split_points();
@@ -312,10 +330,28 @@ public:
     return stats_.estimated_triangles + 4.0 * static_cast<double>(stats_.split_points);
   }
 
-  /// The kernel on the whole domain (the N == 1 path), markers 0.
-  /// \throws pdd::meshing_error(-1, ...) from the kernel.
+  /// The kernel on the whole domain (the N == 1 path), markers 0. Input angles < 60 deg are
+  /// shielded first (pdd::shield, Algorithm 8.2 with N = 1): the kernel meshes D' and the
+  /// shielded triangles are added as they are.
+  /// \throws pdd::meshing_error(-1, ...) from the kernel, or when it split a shield edge;
+  /// pdd::geometry_error as pdd::shield.
   triangle_mesh mesh_whole() const {
-    return mesher_.mesh(domain_, options_.criteria, uniform_sizing{}).mesh;
+    std::size_t shielded = 0;
+    return mesh_whole(shielded);
+  }
+  /// As mesh_whole(); `shielded_triangles` receives the number of shielded triangles.
+  triangle_mesh mesh_whole(std::size_t& shielded_triangles) const {
+    const shielded_domain sd = shield(domain_, options_.criteria.max_area);
+    shielded_triangles = sd.triangles.size();
+    if (sd.triangles.empty())
+      return mesher_.mesh(domain_, options_.criteria, uniform_sizing{}).mesh;
+    mesher_result r = mesher_.mesh(sd.domain, options_.criteria, uniform_sizing{});
+    const std::size_t splits = add_shield_triangles(r, sd.domain, sd.triangles, 0);
+    if (splits != 0)
+      throw meshing_error(-1, std::to_string(splits) +
+                                  " shield edge(s) were split by the kernel (Theorem 24 (5) "
+                                  "excludes it for a Ruppert-type kernel)");
+    return std::move(r.mesh);
   }
 
   /// The statistics so far.
@@ -326,11 +362,30 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
+  /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i, see
+  /// pdd::shield_decomposition).
+  double unshielded_k() const {
+    if (options_.k_override > 0.0) return options_.k_override;
+    const std::vector<double> lfs = detail::subdomain_lfs(decomposition_, executor_);
+    double shortest = std::numeric_limits<double>::infinity();
+    for (const subdomain& sd : decomposition_.subdomains)
+      for (std::size_t l = 0; l < sd.loops.size(); ++l)
+        for (std::size_t i = 0; i < sd.loops[l].size(); ++i)
+          if (sd.tags[l][i].type == edge_tag::kind::interface) {
+            const point a = decomposition_.vertices[sd.loops[l][i]];
+            const point b = decomposition_.vertices[sd.loops[l][(i + 1) % sd.loops[l].size()]];
+            shortest = std::min(shortest, std::hypot(b.x - a.x, b.y - a.y));
+          }
+    return options_.k_scale * decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()),
+                                                   shortest, options_.criteria);
+  }
+
   void fall_back_to_whole_domain() {
     stats_.monolithic_fallback = true;
     stats_.subdomains = 1;
     stats_.k = stats_.lfs_min = stats_.shortest_separator = 0.0;
     stats_.split_points = 0;
+    stats_.shielded_triangles = 0;
     stats_.decomposition = {};
     decomposition_ = {};
     decoupled_decomposition_ = {};

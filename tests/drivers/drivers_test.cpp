@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace fs = std::filesystem;
@@ -135,13 +136,23 @@ TEST(PddMesh, ExitCodesAndMessages) {
   r = run(PDD_MESH_EXE, bow);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("segment"), std::string::npos) << r.output;
-  // small input angle refused with the vertex and the angle
+}
+
+TEST(PddMesh, ShieldsSmallInputAngles) {
+  // a 5.7 deg input angle: shielded (dissertation 8.1), verified, reported in the stats
   const auto wedge = write_text("wedge.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
                                               "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
-  r = run(PDD_MESH_EXE, wedge);
-  EXPECT_EQ(r.code, 1);
-  EXPECT_NE(r.output.find("vertex 0"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("below 60"), std::string::npos) << r.output;
+  for (const char* n : {"1", "4"}) {
+    const auto stats = pdd::test::temp_path(std::string("wedge") + n + ".json");
+    const auto r = run(PDD_MESH_EXE, wedge + " --max-area 0.05 --verify --threads 1 --subdomains " +
+                                         n + " --stats " + stats.string());
+    EXPECT_EQ(r.code, 0) << r.output;
+    std::ifstream in(stats);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"shielded_triangles\": 1"), std::string::npos) << text;
+    EXPECT_NE(text.find("\"min_angle_unshielded_deg\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"min_input_angle_deg\": 5.71"), std::string::npos) << text;
+  }
 }
 
 TEST(PddMesh, FailedRunLeavesNoOutputFile) {

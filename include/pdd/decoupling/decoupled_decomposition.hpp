@@ -8,6 +8,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/geometry/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
+#include <pdd/shielding/shield_triangle.hpp>
 
 #include <array>
 #include <cstddef>
@@ -57,6 +58,19 @@ struct decoupled_decomposition {
   std::vector<point> points;       ///< split points of all path edges (see first_point)
   /// Per subdomain, per loop edge (loops concatenated in order): its path edge or no_index.
   std::vector<std::vector<index_t>> loop_edge_path;
+  /// Per subdomain, its shielded triangles (dissertation 8.1; see pdd::shield_decomposition):
+  /// the loops in `parts` are then the shielded D_i', whose shield edges carry
+  /// pdd::shield_marker, and each triangle is added to the subdomain's mesh as it is. Empty
+  /// (or empty per subdomain) when there are none.
+  std::vector<std::vector<shield_triangle>> shields;
+
+  /// The number of shielded triangles.
+  std::size_t num_shielded_triangles() const noexcept {
+    std::size_t n = 0;
+    for (const auto& s : shields)
+      n += s.size();
+    return n;
+  }
 
   std::size_t num_subdomains() const noexcept { return parts.subdomains.size(); }
 

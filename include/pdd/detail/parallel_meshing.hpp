@@ -10,6 +10,7 @@
 #include <pdd/detail/decoupling_loops.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/mesh/criteria.hpp>
+#include <pdd/shielding/apply_shields.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <algorithm>
@@ -37,6 +38,8 @@ struct subdomain_report {
 struct meshing_statistics {
   /// Interface pieces found split by the kernel (Corollary 13 says 0).
   std::size_t interface_splits = 0;
+  /// Shield edges found split by the kernel (Theorem 24 (5) says 0; a split one throws).
+  std::size_t shield_splits = 0;
   /// Subdomain meshings repeated by invariance repairs (0 unless interface_splits > 0).
   std::size_t remeshed_subdomains = 0;
   std::size_t repair_rounds = 0;
@@ -81,6 +84,19 @@ public:
       rep.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       ++rep.runs;
       if (!split.empty()) return record_failure(s, in, split);
+      if (s < dd_.shields.size() && !dd_.shields[s].empty()) {
+        const std::size_t ss =
+            add_shield_triangles(r, in.domain, dd_.shields[s], static_cast<int>(s));
+        if (ss != 0) {
+          {
+            const std::lock_guard lock(mutex_);
+            stats.shield_splits += ss;
+          }
+          throw meshing_error(s, std::to_string(ss) +
+                                     " shield edge(s) were split by the kernel (Theorem 24 "
+                                     "(5) excludes it for a Ruppert-type kernel)");
+        }
+      }
       rep.vertices = r.mesh.vertices.size();
       rep.triangles = r.mesh.triangles.size();
       r.mesh.triangle_markers.assign(r.mesh.triangles.size(), static_cast<int>(s));

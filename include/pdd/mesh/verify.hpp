@@ -36,6 +36,10 @@ struct verify_options {
   double area_tolerance = 1e-9;
   /// How many violations are described in messages (all are counted).
   std::size_t max_reported = 20;
+  /// Per triangle: exempt from the quality (minimum angle) check only, e.g. the shielded
+  /// triangles of small input angles (pdd::find_shielded_triangles, dissertation 8.1), whose
+  /// smallest angle is the input angle. Empty: none exempt. All other checks still apply.
+  std::vector<char> quality_exempt{};
 };
 
 /// What verify() found. Counts are exact; messages describe the first max_reported
@@ -107,7 +111,9 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
       if (CGAL::orientation(vi::to_cgal(a), vi::to_cgal(b), vi::to_cgal(c)) != CGAL::LEFT_TURN)
         f |= tri_orientation;
       const auto angles = triangle_angles_deg(a, b, c);
-      if (std::min({angles[0], angles[1], angles[2]}) < min_angle) f |= tri_quality;
+      if (std::min({angles[0], angles[1], angles[2]}) < min_angle &&
+          !(t < o.quality_exempt.size() && o.quality_exempt[t]))
+        f |= tri_quality;
       const double bound = std::min(o.criteria.max_area, bound_at(triangle_centroid(a, b, c)));
       if (triangle_area(a, b, c) > bound * (1.0 + 1e-12)) f |= tri_area;
       flags[t] = f;
@@ -300,14 +306,12 @@ verification_report verify_run(const triangle_mesh& m, const pslg& d, const veri
 /// detail::verify_impl::on_segment_line); every edge lies in at most two triangles, interior
 /// edges in opposite directions, and boundary edges lie on input segments; the triangle areas
 /// sum to pdd::domain_area(d) within o.area_tolerance; every triangle has its smallest angle
-/// >= o.criteria.min_angle_deg - 1e-9 deg and its area <= min(o.criteria.max_area,
-/// sizing.area_at(centroid)) * (1 + 1e-12).
-/// Input vertices are found in the mesh by their coordinates, so any vertex numbering works.
-/// \tparam S a SizingField.
-/// \throws geometry_error as pdd::domain_area(d) (d must consist of closed loops).
-/// Complexity O(n) expected (hashing, bucket sort of edges, segment walks over incident
-/// edges); the triangle and edge checks run in parallel (TBB). The report is the same for any
-/// number of threads. Thread-safe.
+/// >= o.criteria.min_angle_deg - 1e-9 deg (unless o.quality_exempt marks it) and its area <=
+/// min(o.criteria.max_area, sizing.area_at(centroid)) * (1 + 1e-12). Input vertices are found in
+/// the mesh by their coordinates, so any vertex numbering works. \tparam S a SizingField. \throws
+/// geometry_error as pdd::domain_area(d) (d must consist of closed loops). Complexity O(n) expected
+/// (hashing, bucket sort of edges, segment walks over incident edges); the triangle and edge checks
+/// run in parallel (TBB). The report is the same for any number of threads. Thread-safe.
 template <SizingField S>
 verification_report verify(const triangle_mesh& m, const pslg& d, const verify_options& o,
                            const S& sizing) {
