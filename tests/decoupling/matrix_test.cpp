@@ -11,6 +11,7 @@
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 
+#include "mesh_compare.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -22,15 +23,7 @@
 
 namespace {
 
-bool bitwise_equal(const pdd::triangle_mesh& a, const pdd::triangle_mesh& b) {
-  const auto same = [](const auto& x, const auto& y) {
-    return x.size() == y.size() &&
-           (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
-  };
-  return same(a.vertices, b.vertices) && same(a.vertex_markers, b.vertex_markers) &&
-         same(a.triangles, b.triangles) && same(a.triangle_markers, b.triangle_markers) &&
-         same(a.segments, b.segments);
-}
+using pdd::test::bitwise_equal;
 
 /// A per-subdomain MeshSink that keeps what it is given, as a file sink would write it.
 struct collecting_sink {

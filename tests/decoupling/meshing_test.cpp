@@ -15,6 +15,7 @@
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 
+#include "mesh_compare.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -90,15 +91,7 @@ run_result run(const hand_case& c, const pdd::mesh_criteria& criteria, const E& 
   return r;
 }
 
-bool bitwise_equal(const pdd::triangle_mesh& a, const pdd::triangle_mesh& b) {
-  const auto same = [](const auto& x, const auto& y) {
-    return x.size() == y.size() &&
-           (x.empty() || std::memcmp(x.data(), y.data(), x.size() * sizeof(x[0])) == 0);
-  };
-  return same(a.vertices, b.vertices) && same(a.vertex_markers, b.vertex_markers) &&
-         same(a.triangles, b.triangles) && same(a.triangle_markers, b.triangle_markers) &&
-         same(a.segments, b.segments);
-}
+using pdd::test::bitwise_equal;
 
 void expect_valid(const pdd::triangle_mesh& m, const hand_case& c,
                   const pdd::mesh_criteria& criteria) {
