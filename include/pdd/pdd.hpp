@@ -42,6 +42,7 @@
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
+#include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/triangle_mesh.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/parallel/mesh_subdomains.hpp>

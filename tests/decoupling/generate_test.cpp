@@ -13,6 +13,7 @@
 
 #include "mesh_compare.hpp"
 #include "test_support.hpp"
+#include "verified.hpp"
 
 #include <gtest/gtest.h>
 
@@ -25,20 +26,7 @@ namespace {
 
 using pdd::test::bitwise_equal;
 
-void expect_verified(const pdd::triangle_mesh& m, const pdd::pslg& d,
-                     const pdd::mesh_criteria& criteria) {
-  const pdd::verification_report rep = pdd::verify(m, d, {.criteria = criteria});
-  EXPECT_TRUE(rep.ok()) << "delaunay " << rep.delaunay_violations << " orientation "
-                        << rep.orientation_violations << " missing " << rep.missing_segments
-                        << " duplicates " << rep.duplicate_vertices << " quality "
-                        << rep.quality_violations << " area " << rep.area_violations
-                        << " nonmanifold " << rep.nonmanifold_edges << " area " << rep.area_mesh
-                        << " vs " << rep.area_domain
-                        << (rep.messages.empty() ? "" : "\n" + rep.messages.front());
-  const pdd::mesh_statistics st = pdd::compute_statistics(m);
-  EXPECT_GE(st.min_angle_deg, 20.7);
-  EXPECT_LE(st.max_area, criteria.max_area);
-}
+using pdd::test::expect_verified;
 
 TEST(Generate, ModelDomainsVerifyAndAreThreadIndependent) {
   struct named {
@@ -228,7 +216,7 @@ TEST(Pipeline, Stages) {
   EXPECT_TRUE(bitwise_equal(sink.mesh(), pdd::generate(d, o).mesh));
 }
 
-TEST(Generate, SharedDataDomainsWithLargeAngles) {
+TEST(Generate, SharedDataDomains) {
   const auto files = pdd::test::shared_poly_files();
   if (files.empty()) GTEST_SKIP() << "shared/data is absent";
   int used = 0;
@@ -240,13 +228,16 @@ TEST(Generate, SharedDataDomainsWithLargeAngles) {
     } catch (const pdd::error&) {
       continue; // not pure loops (dangling segments, isolated vertices): not for this method
     }
-    const auto props = pdd::analyze(d);
-    if (props.min_angle_deg < 60.0) continue; // the uniform method needs input angles >= 60
     SCOPED_TRACE(f.filename().string());
     pdd::generate_options o;
     o.criteria.max_area = pdd::domain_area(d) / 20000.0;
     o.subdomains = 8;
     o.threads = 2;
+    // Input angles < 60 deg are shielded (tests/shielding). A domain whose tiny feature holds
+    // the uniform k so low that the separators need a huge number of split points (bahamas:
+    // lfs_min 1.1e-6) is left to the benchmarks.
+    pdd::pipeline<> pl(d, o);
+    if (pl.decouple().num_split_points() > 50000) continue;
     const auto r = pdd::generate(d, o);
     EXPECT_EQ(r.statistics.interface_splits, 0u);
     expect_verified(r.mesh, d, o.criteria);
@@ -254,7 +245,7 @@ TEST(Generate, SharedDataDomainsWithLargeAngles) {
     EXPECT_TRUE(bitwise_equal(r.mesh, pdd::generate(d, o).mesh));
     ++used;
   }
-  EXPECT_GE(used, 1);
+  EXPECT_GE(used, 4);
 }
 
 } // namespace

@@ -13,6 +13,7 @@
 
 #include "mesh_compare.hpp"
 #include "test_support.hpp"
+#include "verified.hpp"
 
 #include <gtest/gtest.h>
 
@@ -72,15 +73,7 @@ TEST(UniformMatrix, VerifiedDeterministicAndSinkConsistent) {
       const pdd::generate_result one = pdd::generate(d, o);
       EXPECT_EQ(one.statistics.subdomains, n);
       EXPECT_EQ(one.statistics.interface_splits, 0u);
-      const pdd::verification_report rep = pdd::verify(one.mesh, d, {.criteria = o.criteria});
-      EXPECT_TRUE(rep.ok()) << "delaunay " << rep.delaunay_violations << " missing "
-                            << rep.missing_segments << " quality " << rep.quality_violations
-                            << " area " << rep.area_mesh << " vs " << rep.area_domain
-                            << (rep.messages.empty() ? "" : "\n" + rep.messages.front());
-      EXPECT_EQ(rep.delaunay_violations, 0u);
-      const pdd::mesh_statistics st = pdd::compute_statistics(one.mesh);
-      EXPECT_GE(st.min_angle_deg, 20.7 - 1e-9);
-      EXPECT_LE(st.max_area, o.criteria.max_area);
+      pdd::test::expect_verified(one.mesh, d, o.criteria);
 
       o.threads = 2;
       EXPECT_TRUE(bitwise_equal(one.mesh, pdd::generate(d, o).mesh)) << "1 vs 2 threads";

@@ -17,6 +17,7 @@
 
 #include "mesh_compare.hpp"
 #include "test_support.hpp"
+#include "verified.hpp"
 
 #include <gtest/gtest.h>
 
@@ -95,17 +96,7 @@ using pdd::test::bitwise_equal;
 
 void expect_valid(const pdd::triangle_mesh& m, const hand_case& c,
                   const pdd::mesh_criteria& criteria) {
-  const pdd::verification_report rep = pdd::verify(m, c.domain, {.criteria = criteria});
-  EXPECT_TRUE(rep.ok()) << "delaunay " << rep.delaunay_violations << " orientation "
-                        << rep.orientation_violations << " missing " << rep.missing_segments
-                        << " duplicates " << rep.duplicate_vertices << " quality "
-                        << rep.quality_violations << " area " << rep.area_violations
-                        << " nonmanifold " << rep.nonmanifold_edges << " area " << rep.area_mesh
-                        << " vs " << rep.area_domain
-                        << (rep.messages.empty() ? "" : "\n" + rep.messages.front());
-  const pdd::mesh_statistics st = pdd::compute_statistics(m);
-  EXPECT_GE(st.min_angle_deg, 20.7);
-  EXPECT_LE(st.max_area, criteria.max_area);
+  pdd::test::expect_verified(m, c.domain, criteria);
   EXPECT_EQ(m.triangle_markers.size(), m.triangles.size());
   // Merged segments are the input boundary only: no interface piece survives the merge.
   for (const auto& e : m.segments)

@@ -48,6 +48,9 @@ inline double shield_length(const std::vector<std::vector<double>>& theta, doubl
                      (1.0 + 2.0 * std::sin(r / 2.0)) * std::sqrt(2.0 * area_bound * std::sin(r)));
       }
     l = std::min(l, std::sqrt(area_bound / std::numbers::sqrt2));
+    // At equality the shielded triangle's area is A exactly; computed coordinates could leave
+    // it an ulp above. One part in 1e9 shorter keeps area <= A after rounding.
+    l *= 1.0 - 1e-9;
   }
   return l;
 }
