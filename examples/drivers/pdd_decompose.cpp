@@ -3,7 +3,13 @@
 //
 //   pdd-decompose INPUT.poly --subdomains N [--min-separator-angle DEG] [--algorithm 1|2]
 //                 [--threads T] [--no-smoothing] [--max-refinement-levels L]
-//                 [--svg FILE.svg] [--stats FILE.json] [-o FILE.pdd] [--quiet]
+//                 [--max-area A] [--svg FILE.svg] [--stats FILE.json] [-o FILE.pdd] [--quiet]
+//
+// --max-area A also shields the small input angles and builds the decoupling path pdd-mesh
+// would build for that area bound, and reports k, the split points and the shielded triangles
+// (the stats gain k, lfs_min, shortest_separator, split_points, shielded_triangles,
+// estimated_triangles): a cheap look at whether a decoupled run is sensible. pdd-mesh uses
+// MADD's defaults, which do not smooth: add --no-smoothing to plan exactly its path.
 //
 // -o writes the decomposition in pdd's text format (include/pdd/io/decomposition_io.hpp),
 // which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
@@ -17,6 +23,7 @@
 #include <pdd/io/svg.hpp>
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
+#include <pdd/pipeline.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -24,6 +31,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 namespace {
@@ -32,6 +40,7 @@ struct cli_options {
   std::string input, output, svg, stats;
   pdd::madd_options madd;
   bool no_smoothing = false, quiet = false;
+  double max_area = 0.0; ///< > 0: also plan the decoupling path for this area bound
 };
 
 int run(cli_options o) {
@@ -43,7 +52,24 @@ int run(cli_options o) {
     std::fprintf(stderr, "\r\033[Kpdd-decompose: decomposing into %zu subdomains",
                  o.madd.subdomains);
   pdd::decomposition_statistics st;
-  const pdd::decomposition d = pdd::decompose(domain, o.madd, pdd::default_partitioner{}, &st);
+  pdd::decomposition d;
+  std::optional<pdd::generate_statistics> path; // the decoupling path planned for --max-area
+  if (o.max_area > 0.0) {
+    // the pipeline's own MADD (the same decomposition), shields and decoupling path
+    pdd::generate_options g;
+    g.criteria.max_area = o.max_area;
+    g.subdomains = o.madd.subdomains;
+    g.threads = o.madd.threads;
+    g.madd = o.madd;
+    g.check_memory = false;
+    pdd::pipeline<> pl(domain, g);
+    d = pl.decompose(); // before decouple() shields it
+    pl.decouple();
+    path = pl.statistics();
+    st = path->decomposition;
+  } else {
+    d = pdd::decompose(domain, o.madd, pdd::default_partitioner{}, &st);
+  }
   if (!o.quiet && pdd::detail::stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
   const pdd::decomposition_report check =
       pdd::validate_decomposition(d, domain, {.min_angle_deg = o.madd.min_separator_angle_deg});
@@ -72,6 +98,15 @@ int run(cli_options o) {
     j["valid"] = check.ok();
     j["time_s"] = st.time_s;
     j["total_s"] = total;
+    if (path) {
+      j["max_area"] = o.max_area;
+      j["estimated_triangles"] = path->estimated_triangles;
+      j["k"] = path->k;
+      j["lfs_min"] = path->lfs_min;
+      j["shortest_separator"] = path->shortest_separator;
+      j["split_points"] = path->split_points;
+      j["shielded_triangles"] = path->shielded_triangles;
+    }
     j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
   }
@@ -80,6 +115,11 @@ int run(cli_options o) {
                 "%.3f, separator length %.6g, %.3f s\n",
                 st.subdomains, st.min_separator_angle_deg, st.max_area_over_mean,
                 st.separator_length_total, st.time_s);
+    if (path)
+      std::printf("pdd-decompose: decoupling path for max area %g: k %.6g, %zu split points "
+                  "(about %.0f triangles planned), %zu shielded triangles\n",
+                  o.max_area, path->k, path->split_points, path->estimated_triangles,
+                  path->shielded_triangles);
     for (const std::string* f : {&o.output, &o.svg, &o.stats})
       if (!f->empty()) std::printf("pdd-decompose: wrote %s\n", f->c_str());
   }
@@ -111,6 +151,10 @@ int main(int argc, char** argv) {
                  "dynamic refinement budget (levels r, 2r, 4r, ...)")
       ->check(CLI::Range(1, 30));
   app.add_flag("--no-smoothing", o.no_smoothing, "switch separator smoothing (4.2) off");
+  app.add_option("--max-area", o.max_area,
+                 "also shield small angles and build the decoupling path for this maximum "
+                 "triangle area; report k and the split points (a dry run of pdd-mesh)")
+      ->check(CLI::PositiveNumber);
   app.add_option("-o,--output", o.output, "write the decomposition (pdd text format)");
   app.add_option("--svg", o.svg, "draw the domain and the separators to this SVG file");
   app.add_option("--stats", o.stats, "write statistics as JSON to this file");

@@ -149,16 +149,19 @@ int run(const cli_options& o) {
   }
 
   std::optional<pdd::verification_report> report;
+  double t_verify = 0.0; // part of the total
   if (mesh) {
     bar.stage("statistics");
     st = pdd::compute_statistics(*mesh, sizing);
     sst = pdd::compute_shielding_statistics(*mesh, domain);
     if (o.verify) {
       bar.stage("verifying");
+      const auto t0 = std::chrono::steady_clock::now();
       pdd::verify_options vo{.criteria = g.criteria};
       // shielded triangles keep their input angle: exempt from the quality check only
       vo.quality_exempt = pdd::find_shielded_triangles(*mesh, domain);
       report = pdd::verify(*mesh, domain, vo, sizing);
+      t_verify = pdd::detail::seconds_since(t0);
     }
   }
   std::optional<std::size_t> monolithic_triangles;
@@ -189,6 +192,7 @@ int run(const cli_options& o) {
     j["subdomains"] = gs.subdomains;
     j["threads"] = gs.threads;
     j["k"] = gs.k;
+    j["split_points"] = gs.split_points;
     j["interface_splits"] = gs.interface_splits;
     j["remeshed_subdomains"] = gs.remeshed_subdomains;
     j["area_domain"] = props.area;
@@ -229,6 +233,7 @@ int run(const cli_options& o) {
                     {"merge", gs.timings.merge},
                     {"write", t_write},
                     {"total", t_total}};
+    if (report) j["timings"]["verify"] = t_verify;
     if (monolithic_triangles) j["timings"]["monolithic_comparison"] = t_monolithic;
     j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });

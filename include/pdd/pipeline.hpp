@@ -267,7 +267,7 @@ public:
       std::vector<subdomain_shields> shields;
       if (detail::has_small_angles(decomposition_))
         shields = shield_decomposition(decomposition_, options_.criteria.max_area, executor_,
-                                       unshielded_k());
+                                       shield_length_cap(unshielded_k()));
       decoupling_options dopt{options_.criteria, options_.k_override, options_.k_scale};
       decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
       decoupled_decomposition_.shields.resize(shields.size());
@@ -362,8 +362,8 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
-  /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i, see
-  /// pdd::shield_decomposition).
+  /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i through
+  /// pdd::shield_length_cap, see pdd::shield_decomposition).
   double unshielded_k() const {
     if (options_.k_override > 0.0) return options_.k_override;
     const std::vector<double> lfs = detail::subdomain_lfs(decomposition_, executor_);

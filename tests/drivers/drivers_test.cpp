@@ -118,6 +118,28 @@ TEST(PddMesh, PerSubdomainOutputAndOverRefinement) {
   EXPECT_LT(std::abs(j["over_refinement_pct"].get<double>()), 10.0);
 }
 
+TEST(PddMesh, PerSubdomainStatisticsEqualTheMergedRun) {
+  // the streamed run measures each subdomain mesh on its way to its file (statistics_sink)
+  const auto wedge = write_text("wedge_ps.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
+                                                 "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
+  const auto dir = pdd::test::temp_path("pieces_ps"), merged = pdd::test::temp_path("m.json"),
+             streamed = pdd::test::temp_path("ps.json");
+  fs::remove_all(dir);
+  const std::string common = wedge + " --max-area 0.02 --subdomains 8 --threads 2 -q --stats ";
+  ASSERT_EQ(run(PDD_MESH_EXE, common + merged.string()).code, 0);
+  const auto r =
+      run(PDD_MESH_EXE, common + streamed.string() + " --output-per-subdomain " + dir.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const auto a = read_json(merged), b = read_json(streamed);
+  for (const char* k :
+       {"triangles", "shielded_triangles", "min_angle_deg", "max_angle_deg", "max_ratio",
+        "min_angle_unshielded_deg", "max_ratio_unshielded", "max_ratio_shielded", "max_area_ratio",
+        "angle_histogram_deg", "split_points", "k"})
+    EXPECT_EQ(a[k], b[k]) << k;
+  EXPECT_NEAR(a["area_mesh"].get<double>(), b["area_mesh"].get<double>(), 1e-12);
+  EXPECT_EQ(b["shielded_triangles"], 1);
+}
+
 TEST(PddMesh, ExitCodesAndMessages) {
   // usage
   EXPECT_EQ(run(PDD_MESH_EXE, "").code, 2);
@@ -190,6 +212,31 @@ TEST(PddDecompose, WritesReadableDecompositionAndStats) {
   std::ifstream fa(file), fb(again);
   EXPECT_EQ(std::string((std::istreambuf_iterator<char>(fa)), {}),
             std::string((std::istreambuf_iterator<char>(fb)), {}));
+}
+
+TEST(PddDecompose, MaxAreaPlansThePathPddMeshBuilds) {
+  // --max-area: the shields and the decoupling path of a pdd-mesh run, without meshing
+  const auto star =
+      write_text("star.poly", "8 2 0 0\n1 0 -1\n2 0.2 -0.2\n3 1 0\n4 0.2 0.2\n5 0 1\n6 -0.2 0.2\n"
+                              "7 -1 0\n8 -0.2 -0.2\n8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 7\n"
+                              "7 7 8\n8 8 1\n0\n");
+  const auto plan = pdd::test::temp_path("plan.json"), mesh = pdd::test::temp_path("plan_m.json");
+  const auto r =
+      run(PDD_DECOMPOSE_EXE,
+          star + " -n 6 --threads 2 --no-smoothing --max-area 0.001 -q --stats " + plan.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  ASSERT_EQ(run(PDD_MESH_EXE,
+                star + " --max-area 0.001 --subdomains 6 --threads 2 -q --stats " + mesh.string())
+                .code,
+            0);
+  const auto p = read_json(plan), m = read_json(mesh);
+  EXPECT_GT(p["k"].get<double>(), 0.0);
+  EXPECT_GT(p["split_points"].get<std::size_t>(), 0u);
+  EXPECT_EQ(p["k"], m["k"]);
+  EXPECT_EQ(p["split_points"], m["split_points"]);
+  EXPECT_EQ(p["shielded_triangles"], m["shielded_triangles"]);
+  EXPECT_EQ(p["shielded_triangles"], 4);
+  EXPECT_EQ(run(PDD_DECOMPOSE_EXE, star + " -n 6 --max-area 0").code, 2);
 }
 
 TEST(PddDecompose, UsageAndBadInput) {

@@ -234,7 +234,7 @@ TEST(ShieldMesh, SharedGeometries) {
       std::printf("  N=%zu k %.3g split points %zu shielded %zu\n", n, dd.k, dd.num_split_points(),
                   dd.num_shielded_triangles());
       std::fflush(stdout);
-      if (dd.num_split_points() > 20000) continue;
+      if (dd.num_split_points() > 40000) continue;
       const auto a = check_mesh(g, area, n, 1, name);
       std::printf("  N=%zu %zu triangles\n", n, a.triangles.size());
       std::fflush(stdout);

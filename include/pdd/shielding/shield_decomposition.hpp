@@ -29,6 +29,12 @@ struct subdomain_shields {
   double lfs_min = std::numeric_limits<double>::infinity(); ///< lfs_min(D_i) before shielding
 };
 
+/// The cap on l_i for a decomposition whose unshielded decoupling parameter is k0:
+/// sqrt 3 k0, less one part in 1e9 for rounding (see shield_decomposition). Complexity O(1).
+inline double shield_length_cap(double k0) {
+  return std::sqrt(3.0) * k0 * (1.0 - 1e-9);
+}
+
 /// Shields the small angles of every subdomain of d in place (Algorithm 8.2 with the uniform
 /// area bound m(D_i) = area_bound): l_i = min over its angles theta < 60 deg of
 /// {(1 + 2 sin(theta/2)) sqrt(2 A sin theta), sqrt(A / sqrt 2), lfs_min(D_i)}, the shield
@@ -38,13 +44,18 @@ struct subdomain_shields {
 /// Subdomains without small angles are unchanged, so a decomposition without any is unchanged.
 /// The shielded loops are what pdd::decouple then sees: its k uses lfs_min(D_i') (Theorem 24
 /// (3): > l_i / sqrt 3).
-/// `max_l` caps every l_i. With a decoupling path it must be the decoupling parameter k0 of the
-/// unshielded decomposition (pdd::pipeline passes it): the separators are split into pieces
-/// shorter than 2k, which makes every subdomain's features as small as k, and a shield edge
-/// (length < l_i) is then safe from splitting like an interface piece only when it is shorter
-/// than 2k. With l_i <= k0, k = min(k0, lfs_min(D_i')) > l_i / 2 > |b'c'| / 2. (Theorem 24
-/// (5) assumes |b'c'| < 2 lfs_min(D_i) suffices; in a thin tip subdomain meshed with a global
-/// k << lfs_min(D_i), CGAL splits such a shield edge.)
+/// `max_l` caps every l_i. With a decoupling path it must be at most sqrt 3 k0, k0 the
+/// decoupling parameter of the unshielded decomposition (pdd::pipeline passes
+/// shield_length_cap(k0)): the separators are split into pieces shorter than 2k, which makes
+/// every subdomain's features as small as k, and a shield edge is then safe from splitting like
+/// an interface piece only when it is shorter than 2k. With l_i <= sqrt 3 k0 and
+/// k = min(k0, lfs_min(D_i')): |b'c'| = l_i / (cos(theta/2) + sin theta) <= l_i < 2 k0, and,
+/// when lfs_min(D_i') is the smaller, lfs_min(D_i') > l_i / 2 (Lemma 23 (iii) gives l_i / sqrt 3
+/// for theta <= 30 deg; tests/shielding measures > l_i / 2 up to 59 deg) while
+/// |b'c'| < l_i since cos(theta/2) + sin theta > 1. The cap sqrt 3 k0 (rather than k0) keeps
+/// k = k0 when every small angle is <= 30 deg: the shields then do not shorten the interface
+/// pieces. (Theorem 24 (5) assumes |b'c'| < 2 lfs_min(D_i) suffices; in a thin tip subdomain
+/// meshed with a global k << lfs_min(D_i), CGAL splits such a shield edge.)
 /// \returns per subdomain its shielded triangles (empty for most).
 /// \pre d as MADD makes it: outer loop counter-clockwise, holes clockwise.
 /// \throws pdd::decomposition_error when a small angle has a separator as one of its sides
