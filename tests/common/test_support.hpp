@@ -3,8 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <pdd/geometry/pslg.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -40,6 +44,19 @@ inline std::filesystem::path temp_path(const std::string& name) {
   for (char& c : prefix)
     if (c == '/') c = '_';
   return std::filesystem::path(PDD_TEST_TMP_DIR) / (prefix + "_" + name);
+}
+
+/// A star polygon: `spikes` tips at radius 1 and as many notches at radius `inner`, the first
+/// tip on the positive x axis (tip angles 2 atan(...) well below 60 deg for many spikes).
+inline pslg star_polygon(int spikes, double inner) {
+  pslg g;
+  std::vector<point> p;
+  for (int i = 0; i < 2 * spikes; ++i) {
+    const double r = i % 2 == 0 ? 1.0 : inner, a = i * std::numbers::pi / spikes;
+    p.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  g.add_loop(p, 1);
+  return g;
 }
 
 } // namespace pdd::test

@@ -45,14 +45,7 @@ pdd::pslg zigzag() {
 
 /// A star with 16 spikes (outer radius 1, inner 0.6).
 pdd::pslg star() {
-  pdd::pslg g;
-  std::vector<pdd::point> p;
-  for (int i = 0; i < 32; ++i) {
-    const double r = i % 2 == 0 ? 1.0 : 0.6, a = i * std::numbers::pi / 16.0;
-    p.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  g.add_loop(p, 1);
-  return g;
+  return pdd::test::star_polygon(16, 0.6);
 }
 
 double area_of(const pdd::pslg& g) {

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_support.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <numbers>
@@ -12,16 +14,9 @@
 
 namespace {
 
-/// A star with 12 spikes of 2 * atan(0.15 / 0.85)-ish tips: input angles far below 60 deg.
+/// A star with 12 spikes: input angles far below 60 deg.
 pdd::pslg spiky_star() {
-  pdd::pslg g;
-  std::vector<pdd::point> p;
-  for (int i = 0; i < 24; ++i) {
-    const double r = i % 2 == 0 ? 1.0 : 0.5, a = i * std::numbers::pi / 12.0;
-    p.push_back({r * std::cos(a), r * std::sin(a)});
-  }
-  g.add_loop(p, 1);
-  return g;
+  return pdd::test::star_polygon(12, 0.5);
 }
 
 } // namespace
