@@ -7,22 +7,11 @@
 
 #include "test_support.hpp"
 
-#include <cmath>
 #include <cstring>
-#include <numbers>
 #include <vector>
 
-namespace {
-
-/// A star with 12 spikes: input angles far below 60 deg.
-pdd::pslg spiky_star() {
-  return pdd::test::star_polygon(12, 0.5);
-}
-
-} // namespace
-
 TEST(StatisticsSink, StreamedTotalsEqualTheMergedMeshStatistics) {
-  const pdd::pslg g = spiky_star();
+  const pdd::pslg g = pdd::test::star_polygon(12, 0.5); // input angles far below 60 deg
   pdd::generate_options o;
   o.criteria.max_area = 2e-4;
   o.subdomains = 16;
