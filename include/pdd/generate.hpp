@@ -11,7 +11,7 @@
 #include <pdd/detail/system.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/pipeline.hpp>

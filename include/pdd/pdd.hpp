@@ -18,9 +18,9 @@
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 #include <pdd/geometry/properties.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/decomposition_io.hpp>
@@ -38,12 +38,12 @@
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/parallel/mesh_subdomains.hpp>
 #include <pdd/parallel/sequential_executor.hpp>

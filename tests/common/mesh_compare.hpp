@@ -1,7 +1,7 @@
 // Bitwise comparison of meshes for the determinism tests.
 #pragma once
 
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <cstring>
 

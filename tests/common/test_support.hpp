@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 
 #include <algorithm>
 #include <cmath>

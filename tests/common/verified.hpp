@@ -4,10 +4,10 @@
 // smallest angle >= 20.7 deg, every shielded triangle's apex angle equal to the input angle.
 #pragma once
 
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/mesh/quality.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 

@@ -1,5 +1,5 @@
 #include <pdd/errors.hpp>
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/sizing/analytic.hpp>
 #include <pdd/sizing/uniform.hpp>
 

@@ -2,7 +2,7 @@
 // cut by straight separators into an nx x ny grid, and an annulus cut into four quarters.
 #pragma once
 
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>

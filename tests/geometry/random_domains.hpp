@@ -1,7 +1,7 @@
 // Random polygons with holes (and islands inside holes) for the geometry tests.
 #pragma once
 
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -4,8 +4,8 @@
 #include "test_support.hpp"
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <gtest/gtest.h>
 

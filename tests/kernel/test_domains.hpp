@@ -3,7 +3,7 @@
 // terminate with every triangle meeting the bounds.
 #pragma once
 
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -25,9 +25,9 @@
 /// Models: pdd::cgal::mesher (default).
 #pragma once
 
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/criteria.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <concepts>

@@ -16,7 +16,7 @@
 /// Models: pdd::sequential_executor, pdd::tbb_executor.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <concepts>
 #include <span>

@@ -24,8 +24,8 @@
 /// subdomain plus a .pvtu index, nothing kept), pdd::counting_sink (statistics only).
 #pragma once
 
-#include <pdd/geometry/point.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/point.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <concepts>
 #include <utility>

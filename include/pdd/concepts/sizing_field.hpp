@@ -10,7 +10,7 @@
 /// Models: pdd::uniform_sizing, pdd::analytic_sizing.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <concepts>
 

@@ -12,7 +12,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/decomposition.hpp>
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 
 #include <algorithm>

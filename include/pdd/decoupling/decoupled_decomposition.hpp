@@ -6,7 +6,7 @@
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/detail/decoupling_loops.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 

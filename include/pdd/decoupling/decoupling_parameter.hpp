@@ -3,7 +3,7 @@
 /// Lemma 14, Theorem 15).
 #pragma once
 
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -7,8 +7,8 @@
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/detail/cgal_mesher_faces.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>

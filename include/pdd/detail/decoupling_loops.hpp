@@ -5,7 +5,7 @@
 
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <cmath>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <cmath>
 #include <cstddef>

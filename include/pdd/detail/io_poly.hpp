@@ -4,8 +4,8 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/point.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/point.hpp>
+#include <pdd/core/pslg.hpp>
 
 #include <charconv>
 #include <climits>

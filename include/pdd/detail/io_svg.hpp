@@ -3,7 +3,7 @@
 #pragma once
 
 #include <pdd/detail/io_text.hpp>
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 #include <pdd/io/svg_options.hpp>
 
 #include <algorithm>

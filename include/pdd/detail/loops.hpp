@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

@@ -10,7 +10,7 @@
 /// produces the same points.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/detail/parallel_for.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <bit>

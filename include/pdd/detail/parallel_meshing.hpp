@@ -9,7 +9,7 @@
 #include <pdd/decoupling/invariance.hpp>
 #include <pdd/detail/decoupling_loops.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/shielding/apply_shields.hpp>
 #include <pdd/sizing/uniform.hpp>
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <chrono>
 #include <utility>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 #include <pdd/geometry/properties.hpp>
 
 #include <algorithm>

@@ -5,7 +5,7 @@
 #include <pdd/detail/loops.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>

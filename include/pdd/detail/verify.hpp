@@ -3,8 +3,8 @@
 /// coordinates and the walk of an input segment along mesh edges.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/point.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

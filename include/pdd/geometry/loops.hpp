@@ -6,7 +6,7 @@
 
 #include <pdd/detail/loops.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <cmath>

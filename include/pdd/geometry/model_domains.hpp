@@ -5,7 +5,7 @@
 /// the uniform decoupling method as they are.
 #pragma once
 
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 #include <pdd/detail/lfs.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/validate.hpp>
 
 #include <algorithm>

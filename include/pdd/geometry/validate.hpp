@@ -5,7 +5,7 @@
 
 #include <pdd/detail/validate.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 
 namespace pdd {
 

@@ -5,7 +5,7 @@
 #include <pdd/detail/io_mesh.hpp>
 #include <pdd/detail/io_text.hpp>
 #include <pdd/io/atomic_file.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <cstddef>

@@ -6,7 +6,7 @@
 #include <pdd/detail/io_poly.hpp>
 #include <pdd/detail/io_text.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/io/atomic_file.hpp>
 
 #include <cmath>

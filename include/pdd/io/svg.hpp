@@ -7,11 +7,11 @@
 #include <pdd/detail/io_svg.hpp>
 #include <pdd/detail/io_text.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/svg_options.hpp>
 #include <pdd/madd/decomposition.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <cstdint>

@@ -7,7 +7,7 @@
 #include <pdd/detail/io_text.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/io/atomic_file.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <bit>

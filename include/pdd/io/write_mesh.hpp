@@ -7,7 +7,7 @@
 #include <pdd/io/svg.hpp>
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/io/vtu.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <cctype>

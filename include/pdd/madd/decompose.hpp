@@ -9,7 +9,7 @@
 #include <pdd/detail/madd_region.hpp>
 #include <pdd/detail/madd_split.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/madd_options.hpp>

@@ -4,7 +4,7 @@
 /// separator edge shared with exactly one neighbour subdomain).
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <cstdint>
 #include <limits>

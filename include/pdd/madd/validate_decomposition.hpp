@@ -7,7 +7,7 @@
 #include <pdd/detail/madd_region.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

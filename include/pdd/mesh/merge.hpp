@@ -5,7 +5,7 @@
 
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/detail/parallel_merge.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <mutex>
 #include <utility>

@@ -4,8 +4,8 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/detail/quality.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_measures.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <tbb/blocked_range.h>

@@ -6,7 +6,7 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/io/vtu.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <cstddef>
 #include <filesystem>

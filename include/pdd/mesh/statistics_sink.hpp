@@ -6,9 +6,9 @@
 
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/mesh/quality.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/uniform.hpp>
 

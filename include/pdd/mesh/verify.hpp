@@ -5,12 +5,12 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/detail/quality.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/detail/verify.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/criteria.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>

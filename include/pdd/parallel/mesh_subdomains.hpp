@@ -10,7 +10,7 @@
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/detail/parallel_meshing.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/mesh/criteria.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 
 #include <utility>
 #include <vector>

@@ -5,7 +5,7 @@
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 
 #include <algorithm>

@@ -7,7 +7,7 @@
 #include <pdd/detail/shielding_plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 
 #include <algorithm>

@@ -3,12 +3,12 @@
 /// which triangles are shielded, and their statistics apart from the others.
 #pragma once
 
-#include <pdd/detail/quality.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/detail/shielding_plan.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 /// steps 8-9), and the reserved marker of shield edges.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <limits>
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/detail/quality.hpp>
+#include <pdd/core/triangle_measures.hpp>
 
 #include <CGAL/Mesh_2/Face_badness.h>
 

@@ -3,7 +3,7 @@
 /// regional attributes), the input of every pdd pipeline.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <cstddef>
 #include <vector>

@@ -1,9 +1,9 @@
-/// \file quality.hpp
+/// \file triangle_measures.hpp
 /// Triangle measures shared by the meshing criteria, the statistics and the verifier, so that
 /// all three compute the same floating-point values from the same coordinates.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,4 +1,4 @@
-/// \file criteria.hpp
+/// \file mesh_criteria.hpp
 /// pdd::mesh_criteria: the quality and size bounds every kernel and pipeline takes.
 #pragma once
 

@@ -2,7 +2,7 @@
 /// pdd::triangle_mesh: the mesh value type produced by kernels, pipelines and sinks.
 #pragma once
 
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <array>
 #include <vector>
