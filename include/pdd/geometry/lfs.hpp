@@ -3,7 +3,7 @@
 /// restricted to the domain as in Definition 7).
 #pragma once
 
-#include <pdd/detail/lfs.hpp>
+#include <pdd/geometry/detail/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
 

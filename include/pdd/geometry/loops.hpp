@@ -4,7 +4,7 @@
 /// Triangle's convention for closed loops with hole points).
 #pragma once
 
-#include <pdd/detail/loops.hpp>
+#include <pdd/geometry/detail/loops.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>

@@ -3,7 +3,7 @@
 /// the domain side, minimum local feature size; pdd::analyze computes them all at once.
 #pragma once
 
-#include <pdd/detail/lfs.hpp>
+#include <pdd/geometry/detail/lfs.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>

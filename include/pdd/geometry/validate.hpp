@@ -3,7 +3,7 @@
 /// non-intersecting loops with hole points in the holes; Triangle's convention).
 #pragma once
 
-#include <pdd/detail/validate.hpp>
+#include <pdd/geometry/detail/validate.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
 

@@ -3,7 +3,7 @@
 /// (Algorithms 8.1 and 8.2, Lemma 23, Theorem 24) for a pslg domain.
 #pragma once
 
-#include <pdd/detail/lfs.hpp>
+#include <pdd/geometry/detail/lfs.hpp>
 #include <pdd/detail/shielding_plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>

@@ -2,7 +2,7 @@
 /// Implementation of pdd/geometry/validate.hpp: the individual checks.
 #pragma once
 
-#include <pdd/detail/loops.hpp>
+#include <pdd/geometry/detail/loops.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
