@@ -2,8 +2,8 @@
 /// Gmsh MSH 4.1 ASCII output of a pdd::triangle_mesh (read by Gmsh and meshio).
 #pragma once
 
-#include <pdd/detail/io_mesh.hpp>
-#include <pdd/detail/io_text.hpp>
+#include <pdd/io/detail/mesh.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 

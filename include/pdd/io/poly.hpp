@@ -3,8 +3,8 @@
 /// pdd::write_poly (bit-exact writer). Format: https://www.cs.cmu.edu/~quake/triangle.poly.html
 #pragma once
 
-#include <pdd/detail/io_poly.hpp>
-#include <pdd/detail/io_text.hpp>
+#include <pdd/io/detail/poly.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/io/atomic_file.hpp>

@@ -3,9 +3,9 @@
 /// and a MADD decomposition, for inspection in a browser.
 #pragma once
 
-#include <pdd/detail/io_mesh.hpp>
-#include <pdd/detail/io_svg.hpp>
-#include <pdd/detail/io_text.hpp>
+#include <pdd/io/detail/mesh.hpp>
+#include <pdd/io/detail/svg.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/io/atomic_file.hpp>

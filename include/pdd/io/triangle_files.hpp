@@ -4,8 +4,8 @@
 /// Formats: https://www.cs.cmu.edu/~quake/triangle.node.html, triangle.ele.html.
 #pragma once
 
-#include <pdd/detail/io_mesh.hpp>
-#include <pdd/detail/io_text.hpp>
+#include <pdd/io/detail/mesh.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 

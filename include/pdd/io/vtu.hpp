@@ -3,8 +3,8 @@
 /// parallel index (.pvtu) over per-subdomain pieces.
 #pragma once
 
-#include <pdd/detail/io_mesh.hpp>
-#include <pdd/detail/io_text.hpp>
+#include <pdd/io/detail/mesh.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/core/triangle_mesh.hpp>

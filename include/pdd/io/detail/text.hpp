@@ -1,4 +1,4 @@
-/// \file io_text.hpp
+/// \file text.hpp
 /// Implementation details of pdd's writers: locale-independent number formatting and a
 /// buffered text sink that hands large blocks to a std::ostream.
 #pragma once

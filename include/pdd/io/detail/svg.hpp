@@ -1,8 +1,8 @@
-/// \file io_svg.hpp
+/// \file svg.hpp
 /// Implementation details of pdd::write_svg: the viewport transform, colours and path output.
 #pragma once
 
-#include <pdd/detail/io_text.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/io/svg_options.hpp>
 

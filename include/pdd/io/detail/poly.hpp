@@ -1,4 +1,4 @@
-/// \file io_poly.hpp
+/// \file poly.hpp
 /// Implementation of pdd::read_poly / parse_poly: a line tokeniser over an in-memory file and
 /// a strict parser of Triangle's .poly and .node sections.
 #pragma once

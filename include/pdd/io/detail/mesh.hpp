@@ -1,4 +1,4 @@
-/// \file io_mesh.hpp
+/// \file mesh.hpp
 /// Implementation details shared by pdd's mesh writers: the consistency check every writer
 /// runs before it creates a file, and marker look-ups that tolerate empty marker arrays.
 #pragma once
