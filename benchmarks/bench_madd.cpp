@@ -24,7 +24,7 @@
 // mesher meeting the subdomain sees; pdd::validate_decomposition checks the same set).
 //
 // benchmarks/run_madd.sh runs the table in benchmarks/results/madd.md.
-#include <pdd/detail/madd_region.hpp>
+#include <pdd/madd/detail/region.hpp>
 #include <pdd/detail/system.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>

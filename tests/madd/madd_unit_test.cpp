@@ -2,10 +2,10 @@
 // (Definition 4, Figures 3.3 and 3.5), the boundary discretisation and its triangulation
 // (condition (ii)), the contracted graphs of both algorithms (Figures 3.5-3.9), separator
 // insertion (Figure 3.10) and the edge-split registry that keeps neighbours conforming.
-#include <pdd/detail/madd_assemble.hpp>
-#include <pdd/detail/madd_graph.hpp>
-#include <pdd/detail/madd_split.hpp>
-#include <pdd/detail/madd_triangulation.hpp>
+#include <pdd/madd/detail/assemble.hpp>
+#include <pdd/madd/detail/graph.hpp>
+#include <pdd/madd/detail/split.hpp>
+#include <pdd/madd/detail/triangulation.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 
 #include <test_support.hpp>

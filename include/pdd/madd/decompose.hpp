@@ -5,9 +5,9 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/madd_assemble.hpp>
-#include <pdd/detail/madd_region.hpp>
-#include <pdd/detail/madd_split.hpp>
+#include <pdd/madd/detail/assemble.hpp>
+#include <pdd/madd/detail/region.hpp>
+#include <pdd/madd/detail/split.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>

@@ -3,7 +3,7 @@
 /// separator angles, lengths and subdomain areas).
 #pragma once
 
-#include <pdd/detail/madd_region.hpp>
+#include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
 

@@ -4,7 +4,7 @@
 /// dissertation ch. 3; used by the tests and by the pdd-decompose driver).
 #pragma once
 
-#include <pdd/detail/madd_region.hpp>
+#include <pdd/madd/detail/region.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>

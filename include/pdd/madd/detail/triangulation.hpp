@@ -1,4 +1,4 @@
-/// \file madd_triangulation.hpp
+/// \file triangulation.hpp
 /// Implementation detail of MADD: the boundary discretisation Z of a region and its
 /// boundary-conforming Delaunay triangulation (dissertation 3.2, conditions (i)-(ii), and the
 /// static/dynamic refinement of 4.1).
@@ -14,7 +14,7 @@
 /// triangles.
 #pragma once
 
-#include <pdd/detail/madd_region.hpp>
+#include <pdd/madd/detail/region.hpp>
 #include <pdd/errors.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

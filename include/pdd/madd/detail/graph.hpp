@@ -1,4 +1,4 @@
-/// \file madd_graph.hpp
+/// \file graph.hpp
 /// Implementation detail of MADD: junction triangles (Definition 4), the MADD graph of the
 /// first algorithm (3.4, Algorithms 3.1-3.2) and of the second (3.5, Algorithms 3.4-3.5), and
 /// its contraction.
@@ -20,8 +20,8 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/madd_region.hpp>
-#include <pdd/detail/madd_triangulation.hpp>
+#include <pdd/madd/detail/region.hpp>
+#include <pdd/madd/detail/triangulation.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 

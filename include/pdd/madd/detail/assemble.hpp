@@ -1,10 +1,10 @@
-/// \file madd_assemble.hpp
+/// \file assemble.hpp
 /// Implementation detail of MADD: the regions of an input PSLG, the registry of edge splits
 /// that keeps neighbouring regions conforming, and the final decomposition value with
 /// deterministic vertex ids, subdomain order and interfaces.
 #pragma once
 
-#include <pdd/detail/madd_region.hpp>
+#include <pdd/madd/detail/region.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>

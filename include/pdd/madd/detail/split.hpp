@@ -1,4 +1,4 @@
-/// \file madd_split.hpp
+/// \file split.hpp
 /// Implementation detail of MADD: one 2-way split of a region (dissertation 3.3-3.5 with the
 /// dynamic refinement of 4.1, the smoothing of 4.2 and the repairs of 5.1).
 ///
@@ -14,9 +14,9 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/madd_graph.hpp>
-#include <pdd/detail/madd_region.hpp>
-#include <pdd/detail/madd_triangulation.hpp>
+#include <pdd/madd/detail/graph.hpp>
+#include <pdd/madd/detail/region.hpp>
+#include <pdd/madd/detail/triangulation.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/partition/connectivity.hpp>
 

@@ -1,4 +1,4 @@
-/// \file madd_region.hpp
+/// \file region.hpp
 /// Implementation detail of MADD (dissertation ch. 3-4): the working representation of one
 /// subdomain ("region") while it is being decomposed, and the small geometric helpers every
 /// MADD step shares (canonical midpoints, angles, areas).
