@@ -3,11 +3,11 @@
 #include "partition_graphs.hpp"
 #include "test_support.hpp"
 
-#include <pdd/detail/partition_coarsen.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_exact.hpp>
-#include <pdd/detail/partition_fm.hpp>
-#include <pdd/detail/partition_initial.hpp>
+#include <pdd/partition/detail/coarsen.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/exact.hpp>
+#include <pdd/partition/detail/fm.hpp>
+#include <pdd/partition/detail/initial.hpp>
 #include <pdd/partition/bisection_metrics.hpp>
 
 #include <gtest/gtest.h>

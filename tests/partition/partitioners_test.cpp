@@ -3,7 +3,7 @@
 #include "partition_graphs.hpp"
 #include "test_support.hpp"
 
-#include <pdd/detail/partition_metis_input.hpp>
+#include <pdd/partition/detail/metis_input.hpp>
 #include <pdd/partition/bisection_metrics.hpp>
 #include <pdd/partition/boost_partitioner.hpp>
 #include <pdd/partition/default_partitioner.hpp>

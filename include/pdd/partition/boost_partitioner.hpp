@@ -24,8 +24,8 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_multilevel.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/multilevel.hpp>
 #include <pdd/errors.hpp>
 
 #include <cstddef>

@@ -7,9 +7,9 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/partition_connected_refine.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_repair.hpp>
+#include <pdd/partition/detail/connected_refine.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/repair.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/partition/bisection_metrics.hpp>
 

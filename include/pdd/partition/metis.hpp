@@ -7,11 +7,11 @@
 #ifdef PDD_HAVE_METIS
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_exact.hpp>
-#include <pdd/detail/partition_fm.hpp>
-#include <pdd/detail/partition_metis_input.hpp>
-#include <pdd/detail/partition_multilevel.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/exact.hpp>
+#include <pdd/partition/detail/fm.hpp>
+#include <pdd/partition/detail/metis_input.hpp>
+#include <pdd/partition/detail/multilevel.hpp>
 #include <pdd/errors.hpp>
 
 #include <metis.h>

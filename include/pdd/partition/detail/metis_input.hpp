@@ -1,10 +1,10 @@
-/// \file partition_metis_input.hpp
+/// \file metis_input.hpp
 /// Implementation detail of pdd::metis_partitioner: the CSR arrays METIS reads, with the real
 /// weights scaled to integers that cannot overflow METIS's index type. Independent of metis.h
 /// (templated on the index type) so that it is tested on every build.
 #pragma once
 
-#include <pdd/detail/partition_csr.hpp>
+#include <pdd/partition/detail/csr.hpp>
 #include <pdd/errors.hpp>
 
 #include <algorithm>

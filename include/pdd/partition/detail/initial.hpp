@@ -1,14 +1,14 @@
-/// \file partition_initial.hpp
+/// \file initial.hpp
 /// Implementation detail of pdd::boost_partitioner: the initial bisection of the coarsest
 /// graph, by breadth-first and greedy graph growing from a pseudo-peripheral vertex and from
 /// random vertices (Karypis and Kumar 1998, section 3.2, "GGP" and "GGGP"), each refined by
 /// FM, the best kept.
 #pragma once
 
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_exact.hpp>
-#include <pdd/detail/partition_fm.hpp>
-#include <pdd/detail/partition_traversal.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/exact.hpp>
+#include <pdd/partition/detail/fm.hpp>
+#include <pdd/partition/detail/traversal.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-/// \file partition_connected_refine.hpp
+/// \file connected_refine.hpp
 /// Implementation detail of pdd::connected_bisection: greedy rebalancing and cut refinement of a
 /// connected bisection that keep both parts connected. A vertex may move when it is on the
 /// boundary (so it joins the other part connected) and is not an articulation point of its own
@@ -7,8 +7,8 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_repair.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/repair.hpp>
 
 #include <boost/graph/biconnected_components.hpp>
 #include <boost/graph/filtered_graph.hpp>

@@ -1,4 +1,4 @@
-/// \file partition_traversal.hpp
+/// \file traversal.hpp
 /// Implementation detail of the partitioners and of pdd::connected_bisection: breadth-first
 /// orders and pseudo-peripheral vertices, over Boost.Graph's breadth_first_visit.
 #pragma once

@@ -1,11 +1,11 @@
-/// \file partition_coarsen.hpp
+/// \file coarsen.hpp
 /// Implementation detail of pdd::boost_partitioner: the coarsening phase of multilevel
 /// bisection, heavy-edge matching and contraction (B. Hendrickson, R. Leland, "A multilevel
 /// algorithm for partitioning graphs", 1995; G. Karypis, V. Kumar, "A fast and high quality
 /// multilevel scheme for partitioning irregular graphs", SIAM J. Sci. Comput. 20(1), 1998).
 #pragma once
 
-#include <pdd/detail/partition_csr.hpp>
+#include <pdd/partition/detail/csr.hpp>
 
 #include <cstddef>
 #include <random>

@@ -1,13 +1,13 @@
-/// \file partition_multilevel.hpp
+/// \file multilevel.hpp
 /// Implementation detail of pdd::boost_partitioner: the multilevel bisection driver (coarsen by
 /// heavy-edge matching, bisect the coarsest graph, project back with FM refinement per level).
 #pragma once
 
-#include <pdd/detail/partition_coarsen.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_exact.hpp>
-#include <pdd/detail/partition_fm.hpp>
-#include <pdd/detail/partition_initial.hpp>
+#include <pdd/partition/detail/coarsen.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/exact.hpp>
+#include <pdd/partition/detail/fm.hpp>
+#include <pdd/partition/detail/initial.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,4 +1,4 @@
-/// \file partition_csr.hpp
+/// \file csr.hpp
 /// Implementation detail of the partitioners: the compact working graph (Boost's
 /// compressed_sparse_row_graph storing both directions of every undirected edge, parallel edges
 /// merged, self loops dropped), its construction from a pdd::partition_graph with input

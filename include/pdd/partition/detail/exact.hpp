@@ -1,10 +1,10 @@
-/// \file partition_exact.hpp
+/// \file exact.hpp
 /// Implementation detail of the partitioners: the exact bisection of a small graph by
 /// enumeration. Multilevel partitioners (METIS included) are unreliable on a handful of
 /// vertices; below exact_bisection_max_vertices the optimum is cheap to enumerate.
 #pragma once
 
-#include <pdd/detail/partition_csr.hpp>
+#include <pdd/partition/detail/csr.hpp>
 
 #include <cstddef>
 #include <cstdint>

@@ -1,10 +1,10 @@
-/// \file partition_fm.hpp
+/// \file fm.hpp
 /// Implementation detail of the partitioners: Fiduccia–Mattheyses refinement of a bisection
 /// under a balance bound (C. M. Fiduccia, R. M. Mattheyses, "A linear-time heuristic for
 /// improving network partitions", DAC 1982), with real-valued gains kept in ordered sets.
 #pragma once
 
-#include <pdd/detail/partition_csr.hpp>
+#include <pdd/partition/detail/csr.hpp>
 
 #include <algorithm>
 #include <array>

@@ -1,13 +1,13 @@
-/// \file partition_repair.hpp
+/// \file repair.hpp
 /// Implementation detail of pdd::connected_bisection (dissertation 5.1: "a routine ... that
 /// identifies these cases and restores the connectivity"): components of each part, moving
 /// stray components across, and connected growths as further candidates.
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
-#include <pdd/detail/partition_csr.hpp>
-#include <pdd/detail/partition_initial.hpp>
-#include <pdd/detail/partition_traversal.hpp>
+#include <pdd/partition/detail/csr.hpp>
+#include <pdd/partition/detail/initial.hpp>
+#include <pdd/partition/detail/traversal.hpp>
 
 #include <boost/graph/connected_components.hpp>
 #include <boost/graph/filtered_graph.hpp>
