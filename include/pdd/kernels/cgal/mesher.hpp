@@ -5,7 +5,7 @@
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/detail/cgal_mesher.hpp>
+#include <pdd/kernels/cgal/detail/mesher.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/criteria.hpp>
 

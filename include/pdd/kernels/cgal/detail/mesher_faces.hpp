@@ -1,4 +1,4 @@
-/// \file cgal_mesher_faces.hpp
+/// \file mesher_faces.hpp
 /// The face level of pdd::cgal::mesher: CGAL Mesh_2's Refine_faces with the bad-face queue
 /// replaced by a binary heap with lazy deletion.
 ///

@@ -1,11 +1,11 @@
-/// \file cgal_mesher.hpp
+/// \file mesher.hpp
 /// Implementation of pdd::cgal::mesher: the triangulation types, domain marking, the
 /// refinement levels (CGAL Mesh_2's, with segment encroachment seen from the domain only) and
 /// the extraction of the result.
 #pragma once
 
 #include <pdd/concepts/delaunay_mesher.hpp>
-#include <pdd/detail/cgal_mesher_faces.hpp>
+#include <pdd/kernels/cgal/detail/mesher_faces.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
