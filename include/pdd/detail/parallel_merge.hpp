@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/decoupling/decoupled_decomposition.hpp>
-#include <pdd/detail/parallel_for.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 

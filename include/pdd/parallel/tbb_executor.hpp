@@ -3,7 +3,7 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
-#include <pdd/detail/parallel_jobs.hpp>
+#include <pdd/parallel/detail/jobs.hpp>
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>

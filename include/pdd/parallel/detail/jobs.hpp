@@ -1,4 +1,4 @@
-/// \file parallel_jobs.hpp
+/// \file jobs.hpp
 /// Implementation helpers shared by the executors: the start order of jobs and the
 /// collection and rethrowing of job exceptions.
 #pragma once
