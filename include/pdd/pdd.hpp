@@ -45,7 +45,7 @@
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/mesh/verify.hpp>
-#include <pdd/parallel/mesh_subdomains.hpp>
+#include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/bisection_metrics.hpp>

@@ -24,7 +24,7 @@
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/triangle_mesh.hpp>
-#include <pdd/parallel/mesh_subdomains.hpp>
+#include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/shielding/apply_shields.hpp>

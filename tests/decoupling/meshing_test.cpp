@@ -11,7 +11,7 @@
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/verify.hpp>
-#include <pdd/parallel/mesh_subdomains.hpp>
+#include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 

@@ -1,4 +1,4 @@
-/// \file parallel_meshing.hpp
+/// \file mesh_subdomain.hpp
 /// Implementation of pdd::mesh_subdomains: one subdomain job (kernel, invariance check,
 /// delivery) and the invariance repair rounds.
 #pragma once

@@ -8,7 +8,7 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
-#include <pdd/detail/parallel_meshing.hpp>
+#include <pdd/meshing/detail/mesh_subdomain.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 
