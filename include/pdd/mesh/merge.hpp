@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/detail/parallel_merge.hpp>
+#include <pdd/mesh/detail/merge.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 
 #include <mutex>

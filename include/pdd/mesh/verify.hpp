@@ -6,7 +6,7 @@
 
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/core/triangle_measures.hpp>
-#include <pdd/detail/verify.hpp>
+#include <pdd/mesh/detail/verify.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/mesh_criteria.hpp>

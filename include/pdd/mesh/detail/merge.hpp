@@ -1,4 +1,4 @@
-/// \file parallel_merge.hpp
+/// \file merge.hpp
 /// Implementation of pdd::merge_meshes: a deterministic, parallel merge of subdomain meshes
 /// whose shared vertices are identified by exact coordinates.
 #pragma once
