@@ -7,8 +7,8 @@
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
 #include <pdd/decoupling/interface_split.hpp>
-#include <pdd/detail/decoupling_build.hpp>
-#include <pdd/detail/decoupling_loops.hpp>
+#include <pdd/decoupling/detail/build.hpp>
+#include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/decomposition.hpp>

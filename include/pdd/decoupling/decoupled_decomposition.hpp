@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/decoupling/interface_split.hpp>
-#include <pdd/detail/decoupling_loops.hpp>
+#include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>

@@ -5,7 +5,7 @@
 
 #include <pdd/concepts/executor.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
-#include <pdd/detail/decoupling_loops.hpp>
+#include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/detail/shielding_plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>

@@ -7,7 +7,7 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/invariance.hpp>
-#include <pdd/detail/decoupling_loops.hpp>
+#include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/shielding/apply_shields.hpp>

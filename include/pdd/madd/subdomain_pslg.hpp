@@ -1,4 +1,4 @@
-/// \file decoupling_loops.hpp
+/// \file subdomain_pslg.hpp
 /// Implementation of decoupled_decomposition::input and decouple: a subdomain's loops as a
 /// pslg, and loop areas.
 #pragma once

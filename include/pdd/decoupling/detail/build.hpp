@@ -1,4 +1,4 @@
-/// \file decoupling_build.hpp
+/// \file build.hpp
 /// Implementation of pdd::decouple: checking the decomposition and collecting its separator
 /// segments (the path edges).
 #pragma once
