@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/geometry/detail/lfs.hpp>
-#include <pdd/detail/shielding_plan.hpp>
+#include <pdd/shielding/detail/plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>

@@ -6,7 +6,7 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
-#include <pdd/detail/shielding_plan.hpp>
+#include <pdd/shielding/detail/plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/decomposition.hpp>

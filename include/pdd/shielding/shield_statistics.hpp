@@ -4,7 +4,7 @@
 #pragma once
 
 #include <pdd/core/triangle_measures.hpp>
-#include <pdd/detail/shielding_plan.hpp>
+#include <pdd/shielding/detail/plan.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/core/pslg.hpp>

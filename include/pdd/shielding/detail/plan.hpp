@@ -1,4 +1,4 @@
-/// \file shielding_plan.hpp
+/// \file plan.hpp
 /// Implementation of the shielding of small angles (dissertation 8.1): the angles, the length l
 /// of Algorithm 8.2 line 5 and the distances |ab'| of eq. 8.1.
 #pragma once
