@@ -5,7 +5,7 @@
 //   bench_kernel key|pipe TARGET_TRIANGLES [MIN_ANGLE_DEG]
 //
 // benchmarks/run_kernel.sh runs the table in benchmarks/results/kernel.md.
-#include <pdd/detail/system.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>

@@ -25,7 +25,7 @@
 //
 // benchmarks/run_madd.sh runs the table in benchmarks/results/madd.md.
 #include <pdd/madd/detail/region.hpp>
-#include <pdd/detail/system.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/io/poly.hpp>

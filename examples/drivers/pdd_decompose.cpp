@@ -14,7 +14,7 @@
 // -o writes the decomposition in pdd's text format (include/pdd/io/decomposition_io.hpp),
 // which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
 // be decomposed, 2 usage, 3 the decomposition failed its own check, 4 internal error.
-#include <pdd/detail/system.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/atomic_file.hpp>

@@ -6,7 +6,7 @@
 //            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg] [--quiet]
 //
 // Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error.
-#include <pdd/detail/system.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/properties.hpp>

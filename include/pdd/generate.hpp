@@ -8,7 +8,7 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/detail/system.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/core/triangle_mesh.hpp>

@@ -11,8 +11,8 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
-#include <pdd/detail/pipeline_plan.hpp>
-#include <pdd/detail/system.hpp>
+#include <pdd/pipeline/detail/plan.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>

@@ -1,4 +1,4 @@
-/// \file pipeline_plan.hpp
+/// \file plan.hpp
 /// Implementation of pdd::pipeline: the size estimate, the memory estimate, the executor
 /// construction and a sink wrapper that times finish().
 #pragma once
