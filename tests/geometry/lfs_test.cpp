@@ -2,9 +2,9 @@
 #include "random_domains.hpp"
 #include "test_support.hpp"
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/geometry/lfs.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -18,7 +18,7 @@ namespace {
 
 using pdd::index_t;
 using pdd::point;
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using K = pdd::epick;
 using P = K::Point_2;
 
 P cg(point p) {

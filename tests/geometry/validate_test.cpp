@@ -2,9 +2,9 @@
 #include "random_domains.hpp"
 #include "test_support.hpp"
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/geometry/validate.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/intersections.h>
 #include <gtest/gtest.h>
 
@@ -217,7 +217,7 @@ TEST(Validate, RejectsHoleRegionWithoutHolePoint) {
 /// O(S^2) reference: does any pair of segments meet other than at one shared endpoint at an
 /// angle?
 bool brute_force_clash(const pdd::pslg& g) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using K = pdd::epick;
   auto pt = [&](index_t v) { return K::Point_2(g.vertices[v].x, g.vertices[v].y); };
   for (std::size_t i = 0; i < g.segments.size(); ++i)
     for (std::size_t j = i + 1; j < g.segments.size(); ++j) {

@@ -3,13 +3,13 @@
 #include "../kernel/test_domains.hpp"
 #include "test_support.hpp"
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/sizing/analytic.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
@@ -157,7 +157,7 @@ TEST(Verify, SameReportForEveryThreadCount) {
 TEST(Verify, DetectsAFlippedEdge) {
   const auto d = pdd::test::square_with_hole();
   auto m = mesh_of(d, 0.01);
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using K = pdd::epick;
   const auto P = [&](index_t v) { return K::Point_2(m.vertices[v].x, m.vertices[v].y); };
   bool flipped = false;
   for (const auto& [u, v, t0, t1] : interior_edges(m)) {

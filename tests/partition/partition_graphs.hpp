@@ -3,12 +3,12 @@
 // bisection has two connected non-empty parts.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 
 #include <boost/graph/connected_components.hpp>
 
 #include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <array>
@@ -153,7 +153,7 @@ inline partition_graph random_holey_grid(std::uint64_t seed) {
 /// the contracted MADD graph of dissertation 3.5).
 inline partition_graph madd_like_graph(std::size_t n, double contract_fraction,
                                        std::uint64_t seed) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using K = pdd::epick;
   using DT = CGAL::Delaunay_triangulation_2<K>;
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);

@@ -6,7 +6,8 @@
 ///
 /// Requirements: for `const M m`, `const pdd::pslg d`, `const pdd::mesh_criteria c` and any
 /// SizingField `s`, `m.mesh(d, c, s)` returns a pdd::mesher_result. The concept is checked with
-/// pdd::uniform_sizing; models provide `mesh` as a template over SizingField.
+/// detail::sizing_field_archetype (the least a SizingField offers); models provide `mesh` as a
+/// template over SizingField.
 ///
 /// Domain: the faces enclosed by an odd number of the pslg's closed segment loops (outer loops
 /// and holes, Triangle's convention), less any region reached from a hole point without
@@ -25,10 +26,10 @@
 /// Models: pdd::cgal::mesher (default).
 #pragma once
 
+#include <pdd/concepts/sizing_field.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/triangle_mesh.hpp>
-#include <pdd/sizing/uniform.hpp>
 
 #include <concepts>
 #include <vector>
@@ -43,9 +44,18 @@ struct mesher_result {
   std::vector<index_t> split_segments;
 };
 
+namespace detail {
+/// A SizingField with nothing but what the concept requires (Boost's archetype idiom): the
+/// type DelaunayMesher is checked with, so that the concept does not depend on sizing/.
+struct sizing_field_archetype {
+  double area_at(const point&) const noexcept { return 1.0; }
+};
+static_assert(SizingField<sizing_field_archetype>);
+} // namespace detail
+
 template <class M>
 concept DelaunayMesher = requires(const M& m, const pslg& d, const mesh_criteria& c,
-                                  const uniform_sizing& s) {
+                                  const detail::sizing_field_archetype& s) {
   { m.mesh(d, c, s) } -> std::same_as<mesher_result>;
 };
 

@@ -2,13 +2,11 @@
 /// The plain coordinate type used in every pdd value type.
 #pragma once
 
+#include <pdd/core/index.hpp>
+
 #include <compare>
-#include <cstdint>
 
 namespace pdd {
-
-/// Index type of vertices and triangles in pdd's value types.
-using index_t = std::uint32_t;
 
 /// A point in the plane. Ordered lexicographically (x, then y); equality is exact.
 struct point {

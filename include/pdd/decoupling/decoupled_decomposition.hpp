@@ -17,10 +17,6 @@
 
 namespace pdd {
 
-/// The boundary marker of interface pieces in the subdomain inputs (and therefore in the
-/// segments of each subdomain mesh). Reserved: input segments may not carry it.
-inline constexpr int interface_marker = std::numeric_limits<int>::min();
-
 /// One separator segment of H (an edge of an interface chain) and its refinement into pieces
 /// of the decoupling path P (Lemma 9).
 struct path_edge {

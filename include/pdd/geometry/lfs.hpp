@@ -29,4 +29,10 @@ inline double lfs_min(const pslg& g) {
   return detail::lfs_min(g, lt.triangulation);
 }
 
+/// lfs_min(g) for a pslg whose loops detail::find_loops_into has already traced into lt (its
+/// triangulation is reused). \pre lt = find_loops_into(g). Complexity and errors as lfs_min(g).
+inline double lfs_min(const pslg& g, const detail::loops_with_triangulation& lt) {
+  return detail::lfs_min(g, lt.triangulation);
+}
+
 } // namespace pdd

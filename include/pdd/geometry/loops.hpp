@@ -7,7 +7,6 @@
 #include <pdd/geometry/detail/loops.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <cmath>
 #include <cstddef>

@@ -7,12 +7,9 @@
 #include <pdd/core/point.hpp>
 
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 namespace pdd {
-
-inline constexpr index_t no_index = std::numeric_limits<index_t>::max();
 
 /// What a subdomain loop edge lies on.
 struct edge_tag {

@@ -3,14 +3,22 @@
 /// pslg, and loop areas.
 #pragma once
 
-#include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <cmath>
+#include <limits>
 #include <unordered_map>
 #include <vector>
+
+namespace pdd {
+
+/// The boundary marker of interface pieces in the subdomain inputs (and therefore in the
+/// segments of each subdomain mesh). Reserved: input segments may not carry it.
+inline constexpr int interface_marker = std::numeric_limits<int>::min();
+
+} // namespace pdd
 
 namespace pdd::detail {
 

@@ -4,13 +4,13 @@
 /// dissertation ch. 3; used by the tests and by the pdd-decompose driver).
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/box_intersection_d.h>
 
@@ -60,7 +60,6 @@ namespace detail {
 /// share an endpoint, and consecutive edges may not fold back onto each other.
 inline void check_subdomain_simple(const decomposition& d, std::size_t s,
                                    std::vector<std::string>& problems) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
   const subdomain& sd = d.subdomains[s];
   std::vector<std::pair<index_t, index_t>> edges;
@@ -79,20 +78,20 @@ inline void check_subdomain_simple(const decomposition& d, std::size_t s,
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const box& x, const box& y) {
     const auto [a, b] = edges[x.info()];
     const auto [c, e] = edges[y.info()];
-    const K::Point_2 pa(d.vertices[a].x, d.vertices[a].y), pb(d.vertices[b].x, d.vertices[b].y);
-    const K::Point_2 pc(d.vertices[c].x, d.vertices[c].y), pe(d.vertices[e].x, d.vertices[e].y);
+    const epick::Point_2 pa(d.vertices[a].x, d.vertices[a].y), pb(d.vertices[b].x, d.vertices[b].y);
+    const epick::Point_2 pc(d.vertices[c].x, d.vertices[c].y), pe(d.vertices[e].x, d.vertices[e].y);
     bool wrong = false;
     const int shared = (a == c) + (a == e) + (b == c) + (b == e);
     if (shared >= 2) {
       wrong = true; // the same edge twice
     } else if (shared == 1) {
       const index_t v = (a == c || a == e) ? a : b;
-      const K::Point_2 pv(d.vertices[v].x, d.vertices[v].y);
-      const K::Point_2& p = v == a ? pb : pa;
-      const K::Point_2& q = (v == c) ? pe : pc;
+      const epick::Point_2 pv(d.vertices[v].x, d.vertices[v].y);
+      const epick::Point_2& p = v == a ? pb : pa;
+      const epick::Point_2& q = (v == c) ? pe : pc;
       wrong = CGAL::collinear(pv, p, q) && CGAL::angle(p, pv, q) == CGAL::ACUTE;
     } else {
-      wrong = CGAL::do_intersect(K::Segment_2(pa, pb), K::Segment_2(pc, pe));
+      wrong = CGAL::do_intersect(epick::Segment_2(pa, pb), epick::Segment_2(pc, pe));
     }
     if (wrong && bad++ == 0)
       first = "edges (" + std::to_string(a) + ", " + std::to_string(b) + ") and (" +
@@ -106,18 +105,17 @@ inline void check_subdomain_simple(const decomposition& d, std::size_t s,
 /// Orientation and nesting of one subdomain's loops.
 inline void check_subdomain_loops(const decomposition& d, std::size_t s,
                                   std::vector<std::string>& problems) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   const subdomain& sd = d.subdomains[s];
   const std::string name = "subdomain " + std::to_string(s);
-  std::vector<std::vector<K::Point_2>> polys;
+  std::vector<std::vector<epick::Point_2>> polys;
   for (const auto& l : sd.loops) {
-    std::vector<K::Point_2> p;
+    std::vector<epick::Point_2> p;
     for (const index_t v : l)
       p.emplace_back(d.vertices[v].x, d.vertices[v].y);
     polys.push_back(std::move(p));
   }
   for (std::size_t l = 0; l < polys.size(); ++l) {
-    const auto o = CGAL::orientation_2(polys[l].begin(), polys[l].end(), K());
+    const auto o = CGAL::orientation_2(polys[l].begin(), polys[l].end(), epick());
     if (o != (l == 0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE))
       problems.push_back(
           name + ": loop " + std::to_string(l) +
@@ -125,12 +123,12 @@ inline void check_subdomain_loops(const decomposition& d, std::size_t s,
   }
   for (std::size_t h = 1; h < polys.size(); ++h) {
     const auto& q = polys[h][0];
-    if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), q, K()) != CGAL::ON_BOUNDED_SIDE)
+    if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), q, epick()) != CGAL::ON_BOUNDED_SIDE)
       problems.push_back(name + ": hole loop " + std::to_string(h) +
                          " is not inside the outer loop");
     for (std::size_t k = 1; k < polys.size(); ++k)
       if (k != h &&
-          CGAL::bounded_side_2(polys[k].begin(), polys[k].end(), q, K()) != CGAL::ON_UNBOUNDED_SIDE)
+          CGAL::bounded_side_2(polys[k].begin(), polys[k].end(), q, epick()) != CGAL::ON_UNBOUNDED_SIDE)
         problems.push_back(name + ": hole loop " + std::to_string(h) + " lies inside hole loop " +
                            std::to_string(k));
   }

@@ -4,6 +4,7 @@
 /// quality and size bounds) and reports every violation.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/mesh/detail/verify.hpp>
@@ -13,7 +14,6 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/sizing/uniform.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>

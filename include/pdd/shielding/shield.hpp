@@ -3,7 +3,7 @@
 /// (Algorithms 8.1 and 8.2, Lemma 23, Theorem 24) for a pslg domain.
 #pragma once
 
-#include <pdd/geometry/detail/lfs.hpp>
+#include <pdd/geometry/lfs.hpp>
 #include <pdd/shielding/detail/plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
@@ -82,7 +82,7 @@ inline shielded_domain shield(const pslg& g, double area_bound) {
     out.domain = g;
     return out;
   }
-  out.lfs_min = detail::lfs_min(g, lt.triangulation);
+  out.lfs_min = lfs_min(g, lt);
   out.l = detail::shield_length(theta, out.lfs_min, area_bound);
   for (std::size_t k = 0; k < loops.size(); ++k) {
     const auto& loop = loops[k];

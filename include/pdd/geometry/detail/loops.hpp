@@ -3,13 +3,12 @@
 /// constrained triangulation of a PSLG whose flood fill gives loop nesting and the domain.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_data_structure_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
@@ -26,7 +25,6 @@ namespace pdd {
 
 namespace detail {
 
-using epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 inline epick::Point_2 to_cgal(const point& p) {
   return {p.x, p.y};

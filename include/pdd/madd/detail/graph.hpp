@@ -19,11 +19,11 @@
 ///    weaker remaining partial separator is contracted too, so every cut is acceptable.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/triangulation.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <array>
@@ -64,16 +64,15 @@ inline junction_info classify_triangle(const std::array<point, 3>& p,
                                        const std::array<bool, 3>& on_boundary,
                                        const std::array<std::array<point, 2>, 3>& far,
                                        double phi0_accept) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   junction_info j;
   for (int k = 0; k < 3; ++k)
     j.boundary_edges += on_boundary[k] ? 1 : 0;
-  const K::Point_2 q[3] = {{p[0].x, p[0].y}, {p[1].x, p[1].y}, {p[2].x, p[2].y}};
+  const epick::Point_2 q[3] = {{p[0].x, p[0].y}, {p[1].x, p[1].y}, {p[2].x, p[2].y}};
   bool acute = true;
   for (int k = 0; k < 3; ++k)
     acute = acute && CGAL::angle(q[(k + 1) % 3], q[k], q[(k + 2) % 3]) == CGAL::ACUTE;
   if (!acute) return j;
-  const K::Point_2 cc = CGAL::circumcenter(q[0], q[1], q[2]);
+  const epick::Point_2 cc = CGAL::circumcenter(q[0], q[1], q[2]);
   bool inside = true;
   for (int k = 0; k < 3; ++k)
     inside = inside && CGAL::orientation(q[k], q[(k + 1) % 3], cc) == CGAL::LEFT_TURN;

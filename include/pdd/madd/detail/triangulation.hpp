@@ -14,11 +14,11 @@
 /// triangles.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/errors.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -61,12 +61,11 @@ struct madd_triangulation {
 };
 
 /// CGAL types of the MADD triangulation (exact predicates, inexact constructions).
-using madd_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using madd_cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, madd_kernel>;
+using madd_cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, epick>;
 using madd_cdt_fb = CGAL::Constrained_triangulation_face_base_2<
-    madd_kernel, CGAL::Triangulation_face_base_with_info_2<int, madd_kernel>>;
+    epick, CGAL::Triangulation_face_base_with_info_2<int, epick>>;
 using madd_cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    madd_kernel, CGAL::Triangulation_data_structure_2<madd_cdt_vb, madd_cdt_fb>,
+    epick, CGAL::Triangulation_data_structure_2<madd_cdt_vb, madd_cdt_fb>,
     CGAL::Exact_predicates_tag>;
 
 /// Parameter (canonical orientation of the region edge) of Z vertex w seen from the edge
@@ -159,10 +158,10 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
   // --- the constrained Delaunay triangulation of Z.
   madd_cdt cdt;
   {
-    std::vector<std::pair<madd_kernel::Point_2, std::uint32_t>> pts;
+    std::vector<std::pair<epick::Point_2, std::uint32_t>> pts;
     pts.reserve(z.size());
     for (std::uint32_t i = 0; i < z.size(); ++i)
-      pts.emplace_back(madd_kernel::Point_2(z[i].p.x, z[i].p.y), i);
+      pts.emplace_back(epick::Point_2(z[i].p.x, z[i].p.y), i);
     cdt.insert(pts.begin(), pts.end());
   }
   std::vector<madd_cdt::Vertex_handle> handle(z.size());
@@ -229,7 +228,7 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
     z[w].prev = k;
     cdt.remove_constrained_edge(f, fi);
     const auto before = cdt.number_of_vertices();
-    const auto vh = cdt.insert(madd_kernel::Point_2(m.p.x, m.p.y), handle[u]->face());
+    const auto vh = cdt.insert(epick::Point_2(m.p.x, m.p.y), handle[u]->face());
     PDD_ASSERT(cdt.number_of_vertices() == before + 1); // a new vertex, not an old one
     vh->info() = k;
     handle.push_back(vh);

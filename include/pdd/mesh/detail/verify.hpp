@@ -3,10 +3,10 @@
 /// coordinates and the walk of an input segment along mesh edges.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
 #include <array>
@@ -22,10 +22,9 @@
 
 namespace pdd::detail::verify_impl {
 
-using kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 inline constexpr index_t none = std::numeric_limits<index_t>::max();
 
-inline kernel::Point_2 to_cgal(const point& p) {
+inline epick::Point_2 to_cgal(const point& p) {
   return {p.x, p.y};
 }
 

@@ -3,6 +3,7 @@
 /// orders and pseudo-peripheral vertices, over Boost.Graph's breadth_first_visit.
 #pragma once
 
+#include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/breadth_first_search.hpp>
 #include <boost/pending/queue.hpp>
 #include <boost/property_map/property_map.hpp>

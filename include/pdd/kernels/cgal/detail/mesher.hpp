@@ -4,6 +4,7 @@
 /// the extraction of the result.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/kernels/cgal/detail/mesher_faces.hpp>
 #include <pdd/errors.hpp>
@@ -12,7 +13,6 @@
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Clusters.h>
 #include <CGAL/Mesh_2/Refine_edges.h>
 #include <CGAL/Mesh_2/Refine_edges_visitor.h>
@@ -43,18 +43,17 @@ struct vertex_info {
   index_t seg_b = none;
 };
 
-using kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using vertex_base = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, kernel>;
+using vertex_base = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, epick>;
 /// The face info is the nesting level used while marking the domain.
 using face_base =
-    CGAL::Triangulation_face_base_with_info_2<int, kernel, CGAL::Delaunay_mesh_face_base_2<kernel>>;
+    CGAL::Triangulation_face_base_with_info_2<int, epick, CGAL::Delaunay_mesh_face_base_2<epick>>;
 using tds = CGAL::Triangulation_data_structure_2<vertex_base, face_base>;
 /// No constraint may intersect another (CGAL throws), so no vertex is ever constructed.
 using cdt =
-    CGAL::Constrained_Delaunay_triangulation_2<kernel, tds, CGAL::No_constraint_intersection_tag>;
+    CGAL::Constrained_Delaunay_triangulation_2<epick, tds, CGAL::No_constraint_intersection_tag>;
 using vertex_handle = cdt::Vertex_handle;
 using face_handle = cdt::Face_handle;
-using cgal_point = kernel::Point_2;
+using cgal_point = epick::Point_2;
 
 /// Gabriel test of a constrained edge seen from the domain only: the edge is encroached when
 /// the apex of an adjacent face that is in the domain lies in its closed diametral disk
@@ -228,7 +227,7 @@ inline std::vector<vertex_handle> insert_vertices(cdt& tr, const pslg& d) {
   using map = CGAL::Pointer_property_map<cgal_point>::type;
   CGAL::spatial_sort(
       order.begin(), order.end(),
-      CGAL::Spatial_sort_traits_adapter_2<kernel, map>(CGAL::make_property_map(pts)));
+      CGAL::Spatial_sort_traits_adapter_2<epick, map>(CGAL::make_property_map(pts)));
   std::vector<vertex_handle> vh(n);
   face_handle hint;
   for (const std::size_t i : order) {
