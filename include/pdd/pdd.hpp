@@ -1,27 +1,82 @@
 /// \file pdd.hpp
 /// Umbrella header: every public pdd header (not detail/). Include single headers to compile
 /// faster.
+///
+/// Layering (include/pdd/README.md; tests/layering checks it): a module includes only modules
+/// on lower levels and only its own detail/.
+///   0: core, errors
+///   1: concepts, geometry
+///   2: sizing, partition, kernels, parallel
+///   3: madd
+///   4: shielding
+///   5: decoupling
+///   6: io, meshing
+///   7: mesh
+///   8: pipeline
+///   9: generate
+///   10: pdd
 #pragma once
 
+// level 0: core, errors
+#include <pdd/core/index.hpp>
+#include <pdd/core/kernel.hpp>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/point.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_measures.hpp>
+#include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
+
+// level 1: concepts, geometry
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/geometry/lfs.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/model_domains.hpp>
+#include <pdd/geometry/properties.hpp>
+#include <pdd/geometry/validate.hpp>
+
+// level 2: sizing, partition, kernels, parallel
+#include <pdd/kernels/cgal/criteria.hpp>
+#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/parallel/parallel_for.hpp>
+#include <pdd/parallel/sequential_executor.hpp>
+#include <pdd/parallel/tbb_executor.hpp>
+#include <pdd/partition/bisection_metrics.hpp>
+#include <pdd/partition/boost_partitioner.hpp>
+#include <pdd/partition/connectivity.hpp>
+#include <pdd/partition/default_partitioner.hpp>
+#include <pdd/partition/metis.hpp>
+#include <pdd/sizing/analytic.hpp>
+#include <pdd/sizing/uniform.hpp>
+
+// level 3: madd
+#include <pdd/madd/decompose.hpp>
+#include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/decomposition_measures.hpp>
+#include <pdd/madd/decomposition_statistics.hpp>
+#include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/subdomain_pslg.hpp>
+#include <pdd/madd/validate_decomposition.hpp>
+
+// level 4: shielding
+#include <pdd/shielding/apply_shields.hpp>
+#include <pdd/shielding/shield.hpp>
+#include <pdd/shielding/shield_decomposition.hpp>
+#include <pdd/shielding/shield_statistics.hpp>
+#include <pdd/shielding/shield_triangle.hpp>
+
+// level 5: decoupling
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/decoupling/invariance.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/generate.hpp>
-#include <pdd/geometry/lfs.hpp>
-#include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/model_domains.hpp>
-#include <pdd/core/point.hpp>
-#include <pdd/geometry/properties.hpp>
-#include <pdd/core/pslg.hpp>
-#include <pdd/geometry/validate.hpp>
+
+// level 6: io, meshing
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/decomposition_io.hpp>
 #include <pdd/io/msh.hpp>
@@ -31,33 +86,18 @@
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/io/vtu.hpp>
 #include <pdd/io/write_mesh.hpp>
-#include <pdd/kernels/cgal/criteria.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
-#include <pdd/madd/decompose.hpp>
-#include <pdd/madd/decomposition.hpp>
-#include <pdd/madd/decomposition_measures.hpp>
-#include <pdd/madd/madd_options.hpp>
-#include <pdd/madd/validate_decomposition.hpp>
-#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/meshing/mesh_subdomains.hpp>
+
+// level 7: mesh
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
-#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/mesh/verify.hpp>
-#include <pdd/meshing/mesh_subdomains.hpp>
-#include <pdd/parallel/sequential_executor.hpp>
-#include <pdd/parallel/tbb_executor.hpp>
-#include <pdd/partition/bisection_metrics.hpp>
-#include <pdd/partition/boost_partitioner.hpp>
-#include <pdd/partition/connectivity.hpp>
-#include <pdd/partition/default_partitioner.hpp>
-#include <pdd/partition/metis.hpp>
+
+// level 8: pipeline
 #include <pdd/pipeline.hpp>
-#include <pdd/shielding/apply_shields.hpp>
-#include <pdd/shielding/shield.hpp>
-#include <pdd/shielding/shield_decomposition.hpp>
-#include <pdd/shielding/shield_statistics.hpp>
-#include <pdd/shielding/shield_triangle.hpp>
-#include <pdd/sizing/analytic.hpp>
-#include <pdd/sizing/uniform.hpp>
+#include <pdd/pipeline/system.hpp>
+
+// level 9: generate
+#include <pdd/generate.hpp>
