@@ -1,6 +1,6 @@
 // Mesh writers: Triangle files, VTU/PVTU and MSH (read back by meshio through /usr/bin/python3),
 // SVG pictures, write_mesh's dispatch.
-#include "io_test_util.hpp"
+#include "test_files.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/io/msh.hpp>

@@ -1,5 +1,5 @@
 // Reading Triangle .poly files: valid variants, every malformed case, the shared geometries.
-#include "io_test_util.hpp"
+#include "test_files.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/io/poly.hpp>

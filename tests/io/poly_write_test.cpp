@@ -1,5 +1,5 @@
 // write_poly round trips and the atomic file writer.
-#include "io_test_util.hpp"
+#include "test_files.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/io/atomic_file.hpp>

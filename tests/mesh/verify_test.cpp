@@ -1,6 +1,6 @@
 // Tests of pdd::compute_statistics and pdd::verify: values on hand-made meshes, thread-count
 // independence, and verifier checks that must fail on broken meshes.
-#include "../kernel/test_domains.hpp"
+#include "test_domains.hpp"
 #include "test_support.hpp"
 
 #include <pdd/core/kernel.hpp>
