@@ -3,8 +3,8 @@
 // bisection has two connected non-empty parts.
 #pragma once
 
-#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/kernel.hpp>
 
 #include <boost/graph/connected_components.hpp>
 

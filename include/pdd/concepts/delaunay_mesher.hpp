@@ -27,8 +27,8 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/core/pslg.hpp>
 #include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 
 #include <concepts>

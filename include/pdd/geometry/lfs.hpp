@@ -3,9 +3,9 @@
 /// restricted to the domain as in Definition 7).
 #pragma once
 
+#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/detail/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/core/pslg.hpp>
 
 namespace pdd {
 

@@ -4,9 +4,9 @@
 /// Triangle's convention for closed loops with hole points).
 #pragma once
 
-#include <pdd/geometry/detail/loops.hpp>
-#include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/detail/loops.hpp>
 
 #include <cmath>
 #include <cstddef>

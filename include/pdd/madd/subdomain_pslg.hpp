@@ -3,8 +3,8 @@
 /// pslg, and loop areas.
 #pragma once
 
-#include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <cmath>

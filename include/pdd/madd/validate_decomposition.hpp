@@ -5,11 +5,11 @@
 #pragma once
 
 #include <pdd/core/kernel.hpp>
-#include <pdd/madd/detail/region.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/detail/region.hpp>
 
 #include <CGAL/Polygon_2_algorithms.h>
 #include <CGAL/box_intersection_d.h>
@@ -127,8 +127,8 @@ inline void check_subdomain_loops(const decomposition& d, std::size_t s,
       problems.push_back(name + ": hole loop " + std::to_string(h) +
                          " is not inside the outer loop");
     for (std::size_t k = 1; k < polys.size(); ++k)
-      if (k != h &&
-          CGAL::bounded_side_2(polys[k].begin(), polys[k].end(), q, epick()) != CGAL::ON_UNBOUNDED_SIDE)
+      if (k != h && CGAL::bounded_side_2(polys[k].begin(), polys[k].end(), q, epick()) !=
+                        CGAL::ON_UNBOUNDED_SIDE)
         problems.push_back(name + ": hole loop " + std::to_string(h) + " lies inside hole loop " +
                            std::to_string(k));
   }

@@ -4,14 +4,14 @@
 /// quality and size bounds) and reports every violation.
 #pragma once
 
-#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/core/triangle_measures.hpp>
-#include <pdd/mesh/detail/verify.hpp>
-#include <pdd/geometry/loops.hpp>
-#include <pdd/core/pslg.hpp>
+#include <pdd/core/kernel.hpp>
 #include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/mesh/detail/verify.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <tbb/blocked_range.h>

@@ -3,11 +3,11 @@
 /// (Algorithms 8.1 and 8.2, Lemma 23, Theorem 24) for a pslg domain.
 #pragma once
 
-#include <pdd/geometry/lfs.hpp>
-#include <pdd/shielding/detail/plan.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/lfs.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/shielding/detail/plan.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 
 #include <algorithm>

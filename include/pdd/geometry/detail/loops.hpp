@@ -4,8 +4,8 @@
 #pragma once
 
 #include <pdd/core/kernel.hpp>
-#include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Constrained_triangulation_face_base_2.h>
@@ -24,7 +24,6 @@
 namespace pdd {
 
 namespace detail {
-
 
 inline epick::Point_2 to_cgal(const point& p) {
   return {p.x, p.y};

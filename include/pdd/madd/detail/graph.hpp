@@ -19,11 +19,10 @@
 ///    weaker remaining partial separator is contracted too, so every cut is acceptable.
 #pragma once
 
-#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/kernel.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/triangulation.hpp>
-
 
 #include <algorithm>
 #include <array>

@@ -15,8 +15,8 @@
 #pragma once
 
 #include <pdd/core/kernel.hpp>
-#include <pdd/madd/detail/region.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/madd/detail/region.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>

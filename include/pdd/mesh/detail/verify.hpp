@@ -7,7 +7,6 @@
 #include <pdd/core/point.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 
-
 #include <algorithm>
 #include <array>
 #include <bit>

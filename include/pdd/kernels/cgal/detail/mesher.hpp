@@ -4,12 +4,12 @@
 /// the extraction of the result.
 #pragma once
 
-#include <pdd/core/kernel.hpp>
 #include <pdd/concepts/delaunay_mesher.hpp>
-#include <pdd/kernels/cgal/detail/mesher_faces.hpp>
-#include <pdd/errors.hpp>
+#include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/kernels/cgal/detail/mesher_faces.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -225,9 +225,8 @@ inline std::vector<vertex_handle> insert_vertices(cdt& tr, const pslg& d) {
   std::vector<std::size_t> order(n);
   std::iota(order.begin(), order.end(), std::size_t{0});
   using map = CGAL::Pointer_property_map<cgal_point>::type;
-  CGAL::spatial_sort(
-      order.begin(), order.end(),
-      CGAL::Spatial_sort_traits_adapter_2<epick, map>(CGAL::make_property_map(pts)));
+  CGAL::spatial_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_2<epick, map>(CGAL::make_property_map(pts)));
   std::vector<vertex_handle> vh(n);
   face_handle hint;
   for (const std::size_t i : order) {
