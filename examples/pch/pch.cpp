@@ -1,0 +1,1 @@
+// Compiles examples/pch/pch.hpp once (see the top-level CMakeLists.txt).
