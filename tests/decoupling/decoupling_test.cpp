@@ -1,6 +1,5 @@
 // Tests of the decoupling path (dissertation 6.2-6.3): Lemma 9, the canonical split points,
-// the parameter k (Proposition 12, Theorem 15), decouple() on hand-made decompositions, and
-// the executors.
+// the parameter k (Proposition 12, Theorem 15), decouple() on hand-made decompositions.
 #include "hand_decompositions.hpp"
 
 #include <pdd/decoupling/decouple.hpp>
@@ -8,13 +7,10 @@
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
-#include <pdd/parallel/tbb_executor.hpp>
 
 #include <gtest/gtest.h>
 
-#include <atomic>
 #include <cmath>
-#include <mutex>
 #include <numbers>
 #include <random>
 #include <set>
@@ -244,76 +240,6 @@ TEST(Decouple, ResplitHalvesPieces) {
   const auto l = dd.input(0), r = dd.input(1);
   EXPECT_EQ(l.domain.vertices.size(), r.domain.vertices.size());
   EXPECT_EQ(l.domain.vertices.size(), 4u + dd.path[0].pieces - 1);
-}
-
-// --- executors ---------------------------------------------------------------------------------
-
-template <class E>
-void check_executor(const E& ex) {
-  const std::vector<double> work{1, 5, 3, 5, 0, 2};
-  std::vector<std::atomic<int>> runs(work.size());
-  std::mutex m;
-  std::vector<index_t> started;
-  ex.run(work, [&](index_t i) {
-    ++runs[i];
-    const std::lock_guard lock(m);
-    started.push_back(i);
-  });
-  for (auto& r : runs)
-    EXPECT_EQ(r.load(), 1);
-  if (ex.concurrency() == 1) {
-    EXPECT_EQ(started, (std::vector<index_t>{1, 3, 2, 5, 0, 4}));
-  }
-  // Errors: all jobs still run; the smallest failing id is reported, wrapped.
-  for (int repeat = 0; repeat < 20; ++repeat) {
-    std::atomic<int> count{0};
-    try {
-      ex.run(work, [&](index_t i) {
-        ++count;
-        if (i == 4) throw std::runtime_error("boom four");
-        if (i == 2) throw std::runtime_error("boom two");
-      });
-      FAIL() << "no exception";
-    } catch (const pdd::meshing_error& e) {
-      EXPECT_EQ(e.subdomain(), 2);
-      EXPECT_NE(std::string(e.what()).find("boom two"), std::string::npos);
-      EXPECT_NE(std::string(e.what()).find("subdomain 2"), std::string::npos);
-    }
-    EXPECT_EQ(count.load(), 6);
-  }
-  // A meshing_error passes unchanged.
-  try {
-    ex.run(work, [&](index_t i) {
-      if (i == 3) throw pdd::meshing_error(42, "inner");
-    });
-    FAIL() << "no exception";
-  } catch (const pdd::meshing_error& e) {
-    EXPECT_EQ(e.subdomain(), 42);
-  }
-  ex.run(std::vector<double>{}, [](index_t) { FAIL(); });
-}
-
-TEST(Executors, SequentialOrderAndErrors) {
-  check_executor(pdd::sequential_executor{});
-}
-TEST(Executors, TbbOneThread) {
-  EXPECT_EQ(pdd::tbb_executor{1}.concurrency(), 1u);
-  check_executor(pdd::tbb_executor{1});
-}
-TEST(Executors, TbbTwoAndFourThreads) {
-  check_executor(pdd::tbb_executor{2});
-  check_executor(pdd::tbb_executor{4});
-  EXPECT_GE(pdd::tbb_executor{}.concurrency(), 1u);
-}
-TEST(Executors, TbbRunsConcurrently) {
-  // With 2 threads, two jobs that wait for each other both finish.
-  std::atomic<int> arrived{0};
-  pdd::tbb_executor{2}.run(std::vector<double>{1, 1}, [&](index_t) {
-    ++arrived;
-    for (int spin = 0; arrived.load() < 2 && spin < 200000000; ++spin) {
-    }
-  });
-  EXPECT_EQ(arrived.load(), 2);
 }
 
 } // namespace

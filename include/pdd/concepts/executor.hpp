@@ -10,8 +10,9 @@
 /// subdomains never end up last on an otherwise idle machine (list scheduling, LPT order).
 /// Jobs may run concurrently on different threads; each job runs on one thread. If jobs throw,
 /// every job still runs (so that the reported error does not depend on timing), and then the
-/// exception of the smallest failing index is rethrown: a pdd::meshing_error unchanged, any
-/// other exception as pdd::meshing_error(i, what()). The executor is const and may be shared.
+/// exception of the smallest failing index is rethrown as it was thrown (std::exception_ptr,
+/// oneTBB's model; the caller, who knows what index i stands for, adds that to the message).
+/// The executor is const and may be shared.
 ///
 /// Models: pdd::sequential_executor, pdd::tbb_executor.
 #pragma once

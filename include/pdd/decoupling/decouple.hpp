@@ -4,20 +4,19 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
-#include <pdd/decoupling/interface_split.hpp>
 #include <pdd/decoupling/detail/build.hpp>
-#include <pdd/madd/subdomain_pslg.hpp>
+#include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/decomposition.hpp>
-#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <string>
 #include <utility>
@@ -67,21 +66,15 @@ std::vector<double> subdomain_lfs(const decomposition& d, const E& ex) {
       n += loop.size();
     work[s] = static_cast<double>(n);
   }
-  std::vector<std::exception_ptr> errors(m);
+  // The executor rethrows the original exception of the smallest failing subdomain.
   ex.run(work, [&](index_t s) {
-    try {
-      pslg g;
-      std::vector<index_t> unused;
-      build_subdomain_pslg(
-          d, s, g, [](std::size_t, index_t, index_t, pslg&) { return no_index; }, unused,
-          interface_marker);
-      lfs[s] = lfs_min(g);
-    } catch (...) {
-      errors[s] = std::current_exception();
-    }
+    pslg g;
+    std::vector<index_t> unused;
+    build_subdomain_pslg(
+        d, s, g, [](std::size_t, index_t, index_t, pslg&) { return no_index; }, unused,
+        interface_marker);
+    lfs[s] = lfs_min(g);
   });
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
   return lfs;
 }
 

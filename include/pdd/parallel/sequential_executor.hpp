@@ -16,7 +16,7 @@ struct sequential_executor {
   unsigned concurrency() const noexcept { return 1; }
 
   /// Runs job(i) for every i in [0, work.size()) in order of decreasing work[i].
-  /// \throws pdd::meshing_error for the smallest failing index, after all jobs ran (see
+  /// \throws the original exception of the smallest failing index, after all jobs ran (see
   /// the Executor concept). Complexity: n log n plus the jobs.
   template <class Job>
   void run(std::span<const double> work, Job&& job) const {

@@ -31,8 +31,8 @@ struct tbb_executor {
   }
 
   /// Runs job(i) for every i in [0, work.size()), starting them in order of decreasing work[i].
-  /// \throws pdd::meshing_error for the smallest failing index, after all jobs ran (see the
-  /// Executor concept). Complexity: n log n plus the jobs.
+  /// \throws the original exception of the smallest failing index, after all jobs ran (see
+  /// the Executor concept). Complexity: n log n plus the jobs.
   template <class Job>
   void run(std::span<const double> work, Job&& job) const {
     const std::size_t n = work.size();

@@ -4,18 +4,16 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
-#include <pdd/madd/subdomain_pslg.hpp>
-#include <pdd/shielding/detail/plan.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
+#include <pdd/shielding/detail/plan.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <exception>
 #include <limits>
 #include <string>
 #include <vector>
@@ -76,49 +74,43 @@ shield_decomposition(decomposition& d, double area_bound, const E& executor = {}
   for (std::size_t s = 0; s < m; ++s)
     for (const auto& loop : d.subdomains[s].loops)
       work[s] += static_cast<double>(loop.size());
-  std::vector<std::exception_ptr> errors(m);
+  // The executor rethrows the original exception of the smallest failing subdomain.
   executor.run(work, [&](index_t s) {
-    try {
-      const subdomain& sd = d.subdomains[s];
-      bool any = false;
-      for (std::size_t l = 0; l < sd.loops.size(); ++l) {
-        const auto& loop = sd.loops[l];
-        const std::size_t n = loop.size();
-        std::vector<point> pts;
-        for (const index_t v : loop)
-          pts.push_back(d.vertices[v]);
-        theta[s].push_back(detail::shield_angles(pts, std::vector<char>(n, 1)));
-        for (std::size_t i = 0; i < n; ++i) {
-          if (theta[s][l][i] == 0.0) continue;
-          any = true;
-          if (sd.tags[l][i].type != edge_tag::kind::external ||
-              sd.tags[l][(i + n - 1) % n].type != edge_tag::kind::external)
-            throw decomposition_error("subdomain " + std::to_string(s) + ": the angle of " +
-                                      std::to_string(theta[s][l][i]) + " deg at vertex " +
-                                      std::to_string(loop[i]) +
-                                      " is formed by a separator; it cannot be shielded");
-        }
+    const subdomain& sd = d.subdomains[s];
+    bool any = false;
+    for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+      const auto& loop = sd.loops[l];
+      const std::size_t n = loop.size();
+      std::vector<point> pts;
+      for (const index_t v : loop)
+        pts.push_back(d.vertices[v]);
+      theta[s].push_back(detail::shield_angles(pts, std::vector<char>(n, 1)));
+      for (std::size_t i = 0; i < n; ++i) {
+        if (theta[s][l][i] == 0.0) continue;
+        any = true;
+        if (sd.tags[l][i].type != edge_tag::kind::external ||
+            sd.tags[l][(i + n - 1) % n].type != edge_tag::kind::external)
+          throw decomposition_error("subdomain " + std::to_string(s) + ": the angle of " +
+                                    std::to_string(theta[s][l][i]) + " deg at vertex " +
+                                    std::to_string(loop[i]) +
+                                    " is formed by a separator; it cannot be shielded");
       }
-      if (!any) return;
-      pslg g;
-      std::vector<index_t> unused;
-      detail::build_subdomain_pslg(
-          d, s, g, [](std::size_t, index_t, index_t, pslg&) { return no_index; }, unused,
-          interface_marker);
-      out[s].lfs_min = lfs_min(g);
-      out[s].l = std::min(max_l, detail::shield_length(theta[s], out[s].lfs_min, area_bound));
-      for (std::size_t l = 0; l < sd.loops.size(); ++l) {
-        std::vector<point> pts;
-        for (const index_t v : sd.loops[l])
-          pts.push_back(d.vertices[v]);
-        dist[s].push_back(detail::shield_distances(pts, theta[s][l], out[s].l, sd.loops[l]));
-      }
-    } catch (...) {
-      errors[s] = std::current_exception();
+    }
+    if (!any) return;
+    pslg g;
+    std::vector<index_t> unused;
+    detail::build_subdomain_pslg(
+        d, s, g, [](std::size_t, index_t, index_t, pslg&) { return no_index; }, unused,
+        interface_marker);
+    out[s].lfs_min = lfs_min(g);
+    out[s].l = std::min(max_l, detail::shield_length(theta[s], out[s].lfs_min, area_bound));
+    for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+      std::vector<point> pts;
+      for (const index_t v : sd.loops[l])
+        pts.push_back(d.vertices[v]);
+      dist[s].push_back(detail::shield_distances(pts, theta[s][l], out[s].l, sd.loops[l]));
     }
   });
-  for (const auto& e : errors)
-    if (e) std::rethrow_exception(e);
   // Sequentially, in subdomain order: the pool grows deterministically.
   const bool markers = !d.vertex_markers.empty();
   for (std::size_t s = 0; s < m; ++s) {

@@ -3,8 +3,7 @@
 /// collection and rethrowing of job exceptions.
 #pragma once
 
-#include <pdd/errors.hpp>
-#include <pdd/core/point.hpp>
+#include <pdd/core/index.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -40,22 +39,11 @@ public:
     }
   }
 
-  /// Rethrows the exception of the smallest failing job: a pdd::meshing_error unchanged, any
-  /// other exception as pdd::meshing_error(i, what()).
+  /// Rethrows the original exception of the smallest failing job (oneTBB's model: the caller
+  /// catches what the job threw; whoever knows what a job index means adds it).
   void rethrow_first() const {
-    for (std::size_t i = 0; i < errors_.size(); ++i) {
-      if (!errors_[i]) continue;
-      const auto id = static_cast<long long>(i);
-      try {
-        std::rethrow_exception(errors_[i]);
-      } catch (const meshing_error&) {
-        throw;
-      } catch (const std::exception& e) {
-        throw meshing_error(id, e.what());
-      } catch (...) {
-        throw meshing_error(id, "unknown exception");
-      }
-    }
+    for (const std::exception_ptr& e : errors_)
+      if (e) std::rethrow_exception(e);
   }
 
 private:
