@@ -14,7 +14,8 @@
 // -o writes the decomposition in pdd's text format (include/pdd/io/decomposition_io.hpp),
 // which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
 // be decomposed, 2 usage, 3 the decomposition failed its own check, 4 internal error.
-#include <pdd/pipeline/system.hpp>
+#include "exit_code.hpp"
+
 #include <pdd/errors.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/atomic_file.hpp>
@@ -24,6 +25,7 @@
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
 #include <pdd/pipeline.hpp>
+#include <pdd/pipeline/system.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -164,29 +166,5 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  try {
-    return run(o);
-  } catch (const pdd::input_error& e) {
-    std::fprintf(stderr, "pdd-decompose: error: %s\n", e.what());
-    return 1;
-  } catch (const pdd::geometry_error& e) {
-    std::fprintf(stderr, "pdd-decompose: error: %s: %s\n", o.input.c_str(), e.what());
-    return 1;
-  } catch (const pdd::decomposition_error& e) {
-    std::fprintf(stderr, "pdd-decompose: error: %s: cannot decompose: %s\n", o.input.c_str(),
-                 e.what());
-    return 1;
-  } catch (const pdd::internal_error& e) {
-    std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
-    return 4;
-  } catch (const pdd::meshing_error& e) {
-    std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
-    return 4;
-  } catch (const pdd::error& e) { // files that cannot be read or written
-    std::fprintf(stderr, "pdd-decompose: error: %s\n", e.what());
-    return 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "pdd-decompose: internal error: %s\n", e.what());
-    return 4;
-  }
+  return pdd::drivers::run_reporting_errors("pdd-decompose", o.input, [&] { return run(o); });
 }

@@ -4,6 +4,8 @@
 //
 // The key (54 segments, one hole) and the pipe cross-section (a circle of 576 segments with 9
 // circular holes) are the dissertation's model domains; examples/data holds their output.
+#include "exit_code.hpp"
+
 #include <pdd/errors.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/geometry/validate.hpp>
@@ -31,7 +33,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  try {
+  return pdd::drivers::run_reporting_errors("pdd-geometry", output, [&] {
     const pdd::pslg g = name == "key" ? pdd::key_domain() : pdd::pipe_domain(outer, hole);
     pdd::validate(g);
     pdd::write_poly(output, g);
@@ -39,8 +41,5 @@ int main(int argc, char** argv) {
     std::printf("pdd-geometry: wrote %s (%zu vertices, %zu segments, %zu holes)\n", output.c_str(),
                 g.vertices.size(), g.segments.size(), g.holes.size());
     return 0;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "pdd-geometry: error: %s\n", e.what());
-    return 4;
-  }
+  });
 }

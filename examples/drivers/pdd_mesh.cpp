@@ -6,7 +6,8 @@
 //            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg] [--quiet]
 //
 // Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error.
-#include <pdd/pipeline/system.hpp>
+#include "exit_code.hpp"
+
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/properties.hpp>
@@ -19,6 +20,7 @@
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/uniform.hpp>
 
@@ -36,7 +38,7 @@
 
 namespace {
 
-enum exit_code : int { ok = 0, bad_input = 1, usage = 2, verification_failed = 3, internal = 4 };
+using namespace pdd::drivers; // exit codes
 
 struct cli_options {
   std::string input, output, per_subdomain_dir, stats, svg;
@@ -90,7 +92,7 @@ public:
   progress_sink(Inner& inner, progress& bar) : inner_(inner), bar_(bar) {}
   void start(pdd::index_t n) {
     bar_.start(n);
-    if constexpr (requires { inner_.start(n); }) inner_.start(n);
+    pdd::start_sink(inner_, n);
   }
   void consume(pdd::index_t id, pdd::triangle_mesh&& m) {
     const std::size_t t = m.triangles.size();
@@ -303,31 +305,5 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? ok : usage;
   }
-  try {
-    return run(o);
-  } catch (const pdd::input_error& e) {
-    std::fprintf(stderr, "pdd-mesh: error: %s\n", e.what());
-    return bad_input;
-  } catch (const pdd::geometry_error& e) {
-    std::fprintf(stderr, "pdd-mesh: error: %s: %s\n", o.input.c_str(), e.what());
-    return bad_input;
-  } catch (const pdd::limit_error& e) {
-    std::fprintf(stderr, "pdd-mesh: error: %s\n", e.what());
-    return bad_input;
-  } catch (const pdd::decomposition_error& e) {
-    std::fprintf(stderr, "pdd-mesh: error: %s: cannot decompose: %s\n", o.input.c_str(), e.what());
-    return bad_input;
-  } catch (const pdd::internal_error& e) {
-    std::fprintf(stderr, "pdd-mesh: internal error: %s\n", e.what());
-    return internal;
-  } catch (const pdd::meshing_error& e) {
-    std::fprintf(stderr, "pdd-mesh: internal error: %s\n", e.what());
-    return internal;
-  } catch (const pdd::error& e) { // files that cannot be read or written
-    std::fprintf(stderr, "pdd-mesh: error: %s\n", e.what());
-    return bad_input;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "pdd-mesh: internal error: %s\n", e.what());
-    return internal;
-  }
+  return pdd::drivers::run_reporting_errors("pdd-mesh", o.input, [&] { return run(o); });
 }

@@ -1,0 +1,44 @@
+// Tests of the drivers' shared error report (examples/drivers/exit_code.hpp): the exit code of
+// every pdd error type, and the messages run_reporting_errors prints.
+#include "../../examples/drivers/exit_code.hpp"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+namespace {
+
+using pdd::drivers::exit_code_for;
+
+TEST(ExitCode, EveryErrorType) {
+  EXPECT_EQ(exit_code_for(pdd::input_error("a.poly", 3, "bad")), pdd::drivers::bad_input);
+  EXPECT_EQ(exit_code_for(pdd::geometry_error("crossing", {1, 2})), pdd::drivers::bad_input);
+  EXPECT_EQ(exit_code_for(pdd::decomposition_error("thin")), pdd::drivers::bad_input);
+  EXPECT_EQ(exit_code_for(pdd::decoupling_error("k")), pdd::drivers::bad_input);
+  EXPECT_EQ(exit_code_for(pdd::limit_error("memory")), pdd::drivers::bad_input);
+  EXPECT_EQ(exit_code_for(pdd::error("cannot write")), pdd::drivers::bad_input);
+  EXPECT_EQ(exit_code_for(pdd::meshing_error(3, "kernel")), pdd::drivers::internal);
+  EXPECT_EQ(exit_code_for(pdd::internal_error("invariant")), pdd::drivers::internal);
+}
+
+TEST(ExitCode, ReportsAndReturns) {
+  const auto run = [](auto body) {
+    testing::internal::CaptureStderr();
+    const int rc = pdd::drivers::run_reporting_errors("pdd-x", "in.poly", body);
+    return std::make_pair(rc, testing::internal::GetCapturedStderr());
+  };
+  EXPECT_EQ(run([] { return 3; }), std::make_pair(3, std::string()));
+  EXPECT_EQ(run([]() -> int { throw pdd::geometry_error("segments 1 and 2 cross", {1, 2}); }),
+            std::make_pair(1, std::string("pdd-x: error: in.poly: segments 1 and 2 cross\n")));
+  EXPECT_EQ(run([]() -> int { throw pdd::decomposition_error("too thin"); }),
+            std::make_pair(1, std::string("pdd-x: error: in.poly: cannot decompose: too thin\n")));
+  EXPECT_EQ(run([]() -> int { throw pdd::input_error("a.poly", 3, "bad"); }),
+            std::make_pair(1, std::string("pdd-x: error: a.poly:3: bad\n")));
+  EXPECT_EQ(run([]() -> int { throw pdd::meshing_error(5, "failed"); }),
+            std::make_pair(4, std::string("pdd-x: internal error: subdomain 5: failed\n")));
+  EXPECT_EQ(run([]() -> int { throw std::logic_error("oops"); }),
+            std::make_pair(4, std::string("pdd-x: internal error: oops\n")));
+}
+
+} // namespace
