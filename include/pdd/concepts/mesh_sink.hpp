@@ -24,7 +24,7 @@
 /// subdomain plus a .pvtu index, nothing kept), pdd::counting_sink (statistics only).
 #pragma once
 
-#include <pdd/core/point.hpp>
+#include <pdd/core/index.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 
 #include <concepts>
@@ -37,6 +37,13 @@ concept MeshSink = requires(S& s, index_t id, triangle_mesh&& m) {
   s.consume(id, std::move(m));
   s.finish();
 };
+
+/// Calls sink.start(n) when the sink has it (the optional part of MeshSink); the one place
+/// that tests for it, for the pipeline and for sinks that wrap other sinks.
+template <class S>
+void start_sink(S& sink, index_t n) {
+  if constexpr (requires { sink.start(n); }) sink.start(n);
+}
 
 /// Whether sink type S keeps the meshes it receives in memory (S::retains_meshes, default
 /// true): the pipeline refuses area bounds whose mesh would not fit in memory only then.

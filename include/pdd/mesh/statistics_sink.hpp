@@ -7,8 +7,8 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/mesh/quality.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/mesh/quality.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/uniform.hpp>
 
@@ -77,7 +77,7 @@ public:
       const std::lock_guard lock(mutex_);
       if (parts_.size() < n) parts_.resize(n);
     }
-    if constexpr (requires { inner_.start(n); }) inner_.start(n);
+    start_sink(inner_, n);
   }
 
   /// Measures the mesh, then hands it to the inner sink.

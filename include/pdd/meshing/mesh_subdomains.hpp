@@ -7,10 +7,10 @@
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/decoupling/decoupled_decomposition.hpp>
-#include <pdd/meshing/detail/mesh_subdomain.hpp>
-#include <pdd/errors.hpp>
 #include <pdd/core/mesh_criteria.hpp>
+#include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/meshing/detail/mesh_subdomain.hpp>
 
 #include <utility>
 #include <vector>
@@ -44,7 +44,7 @@ meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_op
                                    const M& mesher, const E& executor, S& sink) {
   detail::meshing_run<M, S> run(dd, options.criteria, mesher, sink);
   const auto m = static_cast<index_t>(dd.num_subdomains());
-  if constexpr (requires { sink.start(m); }) sink.start(m);
+  start_sink(sink, m);
   executor.run(run.work, [&](index_t s) { run.mesh_one(s); });
   while (run.has_failures()) {
     const std::vector<index_t> ids = run.prepare_repair(options.max_repairs);

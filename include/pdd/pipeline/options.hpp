@@ -1,0 +1,70 @@
+/// \file options.hpp
+/// pdd::generate_options: the options of pdd::generate and pdd::pipeline.
+#pragma once
+
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/madd/madd_options.hpp>
+
+#include <cstddef>
+#include <string>
+
+namespace pdd {
+
+/// Options of pdd::generate and pdd::pipeline.
+struct generate_options {
+  /// Quality and uniform size bounds of every triangle.
+  mesh_criteria criteria;
+  /// N, the number of subdomains. 0: automatic (pdd::automatic_subdomains); 1: the kernel
+  /// meshes the whole domain at once (no decomposition).
+  std::size_t subdomains = 0;
+  /// Threads of every stage; 0: all cores.
+  unsigned threads = 0;
+  /// MADD options. Its `subdomains` and `threads` are the two fields above: leave them at
+  /// their defaults or give the same values (check_generate_options); `max_subdomain_area`
+  /// must stay infinite (the pipeline plans N itself).
+  madd_options madd;
+  /// Multiplies the decoupling parameter k of Theorem 15 (in (0, 1] keeps the guarantee).
+  double k_scale = 1.0;
+  /// > 0: use this k instead (experiments; see decoupling_options::k_override).
+  double k_override = 0.0;
+  /// Invariance repair rounds (see mesh_subdomains; the theory says none are ever needed).
+  unsigned max_repairs = 3;
+  /// Refuse (pdd::limit_error) an area bound whose mesh would not fit in physical memory.
+  bool check_memory = true;
+  /// Automatic N: the number of triangles aimed at per subdomain (see automatic_subdomains).
+  double target_subdomain_triangles = 60000.0;
+  /// Automatic N: at least this many subdomains per thread when running on several threads.
+  unsigned min_subdomains_per_thread = 4;
+  /// Automatic N: no subdomain is planned below this many triangles.
+  double min_subdomain_triangles = 5000.0;
+  /// Automatic N: fall back to N = 1 when the decoupling path has more split points than this
+  /// fraction of the estimated triangles. That happens when k is held down by a small input
+  /// feature (k <= lfs_min): the uniform method then refines every separator to that scale
+  /// and would over-refine the mesh (dissertation 6.3; the graded method of ch. 7 is the
+  /// remedy). A requested N (subdomains > 0) is always used.
+  double max_split_point_fraction = 0.05;
+};
+
+/// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own
+/// fields, instead of silently overriding it: madd.subdomains and madd.threads must be their
+/// defaults or equal subdomains and threads (when subdomains is 0, automatic, madd.subdomains
+/// must be its default), and madd.max_subdomain_area must be infinite.
+/// \throws pdd::decomposition_error naming the field. Complexity O(1).
+inline void check_generate_options(const generate_options& o) {
+  const madd_options defaults;
+  const auto bad = [](const std::string& what) {
+    throw decomposition_error("generate_options: " + what);
+  };
+  if (o.madd.subdomains != defaults.subdomains && o.madd.subdomains != o.subdomains)
+    bad("madd.subdomains = " + std::to_string(o.madd.subdomains) + " contradicts subdomains = " +
+        std::to_string(o.subdomains) + " (the pipeline uses subdomains; leave madd.subdomains)");
+  if (o.madd.threads != defaults.threads && o.madd.threads != o.threads)
+    bad("madd.threads = " + std::to_string(o.madd.threads) + " contradicts threads = " +
+        std::to_string(o.threads) + " (the pipeline uses threads; leave madd.threads)");
+  if (o.madd.max_subdomain_area != defaults.max_subdomain_area)
+    bad("madd.max_subdomain_area is not used by the pipeline (it plans the number of "
+        "subdomains itself; set subdomains instead)");
+}
+
+} // namespace pdd

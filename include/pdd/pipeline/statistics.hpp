@@ -1,0 +1,47 @@
+/// \file statistics.hpp
+/// pdd::generate_statistics and pdd::generate_timings: what a pipeline run did.
+#pragma once
+
+#include <pdd/madd/decomposition_statistics.hpp>
+#include <pdd/meshing/meshing_statistics.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace pdd {
+
+/// Wall-clock seconds of the stages.
+struct generate_timings {
+  double decompose = 0.0; ///< MADD (0 when N == 1)
+  double decouple = 0.0;  ///< k and the decoupling path
+  double mesh = 0.0;      ///< kernel on every subdomain, checks, delivery to the sink
+  double merge = 0.0;     ///< the sink's finish() (the in-memory merge)
+  double total = 0.0;
+};
+
+/// What a pipeline run did.
+struct generate_statistics {
+  std::size_t subdomains = 0;       ///< N used
+  unsigned threads = 0;             ///< the executor's concurrency
+  double estimated_triangles = 0.0; ///< the plan's estimate (infinity without an area bound)
+  double k = 0.0;                   ///< decoupling parameter (0 when N == 1)
+  double lfs_min = 0.0;             ///< min over subdomains (0 when N == 1)
+  double shortest_separator = 0.0;  ///< L (0 when N == 1)
+  std::size_t split_points = 0;     ///< vertices inserted on the separators
+  std::size_t interface_splits = 0; ///< interface pieces the kernel split (should be 0)
+  /// Input angles < 60 deg shielded (dissertation 8.1): shielded triangles in the mesh.
+  std::size_t shielded_triangles = 0;
+  std::size_t shield_splits = 0; ///< shield edges the kernel split (0; a split one throws)
+  std::size_t remeshed_subdomains = 0;
+  std::size_t repair_rounds = 0;
+  /// The automatic plan decomposed the domain but fell back to N = 1 because the decoupling
+  /// path was too fine (see generate_options::max_split_point_fraction).
+  bool monolithic_fallback = false;
+  std::size_t triangles = 0; ///< triangles delivered
+  std::size_t vertices = 0;  ///< vertices of the merged mesh (generate without a sink only)
+  generate_timings timings;
+  decomposition_statistics decomposition; ///< MADD's measurements (N > 1)
+  std::vector<subdomain_report> per_subdomain;
+};
+
+} // namespace pdd
