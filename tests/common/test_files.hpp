@@ -1,11 +1,12 @@
-// Helpers shared by the io tests: temporary folders, small meshes, running /usr/bin/python3.
+// File helpers shared by the tests: temporary folders and files, running /usr/bin/python3 (the
+// meshio reader), a small hand-made mesh.
 #pragma once
 
 #include "test_support.hpp"
 
-#include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
 
 #include <gtest/gtest.h>
 
@@ -31,6 +32,13 @@ inline void write_text(const std::filesystem::path& p, const std::string& text) 
   std::ofstream out(p, std::ios::binary);
   out << text;
   ASSERT_TRUE(out.good()) << p;
+}
+
+/// Writes text to temp_path(name) and returns that path.
+inline std::string write_temp_file(const std::string& name, const std::string& text) {
+  const auto p = temp_path(name);
+  write_text(p, text);
+  return p.string();
 }
 
 inline std::string read_text(const std::filesystem::path& p) {

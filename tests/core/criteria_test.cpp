@@ -1,7 +1,6 @@
-#include <pdd/errors.hpp>
+// Tests of the core value types and the error hierarchy.
 #include <pdd/core/mesh_criteria.hpp>
-#include <pdd/sizing/analytic.hpp>
-#include <pdd/sizing/uniform.hpp>
+#include <pdd/errors.hpp>
 
 #include <gtest/gtest.h>
 
@@ -20,14 +19,6 @@ TEST(Criteria, DefaultIsRatioSqrt2) {
 TEST(Criteria, AngleRatioRoundTrip) {
   for (double deg : {5.0, 20.0, 25.0, 30.0, 33.0})
     EXPECT_NEAR(pdd::min_angle_for_ratio(pdd::ratio_for_min_angle(deg)), deg, 1e-10);
-}
-
-TEST(Sizing, UniformAndAnalytic) {
-  const pdd::uniform_sizing u{0.5};
-  EXPECT_EQ(u.area_at({3, 4}), 0.5);
-  const pdd::analytic_sizing a{[](pdd::point p) { return 1.0 + p.x * p.x; }};
-  EXPECT_EQ(a.area_at({2, 0}), 5.0);
-  static_assert(pdd::SizingField<decltype(a)>);
 }
 
 TEST(Errors, InputErrorCarriesFileAndLine) {

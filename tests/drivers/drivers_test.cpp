@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "test_files.hpp"
 #include "test_support.hpp"
 
 #include <sys/wait.h>
@@ -40,12 +41,6 @@ run_result run(const std::string& exe, const std::string& args) {
 nlohmann::json read_json(const fs::path& p) {
   std::ifstream in(p);
   return nlohmann::json::parse(in);
-}
-
-std::string write_text(const std::string& name, const std::string& text) {
-  const fs::path p = pdd::test::temp_path(name);
-  std::ofstream(p) << text;
-  return p.string();
 }
 
 const std::string key_poly = pdd::test::bundled_data("key.poly").string();
@@ -120,8 +115,8 @@ TEST(PddMesh, PerSubdomainOutputAndOverRefinement) {
 
 TEST(PddMesh, PerSubdomainStatisticsEqualTheMergedRun) {
   // the streamed run measures each subdomain mesh on its way to its file (statistics_sink)
-  const auto wedge = write_text("wedge_ps.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
-                                                 "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
+  const auto wedge = pdd::test::write_temp_file("wedge_ps.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
+                                                                 "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
   const auto dir = pdd::test::temp_path("pieces_ps"), merged = pdd::test::temp_path("m.json"),
              streamed = pdd::test::temp_path("ps.json");
   fs::remove_all(dir);
@@ -146,15 +141,15 @@ TEST(PddMesh, ExitCodesAndMessages) {
   EXPECT_EQ(run(PDD_MESH_EXE, key_poly + " --max-area -1").code, 2);
   EXPECT_EQ(run(PDD_MESH_EXE, key_poly + " --no-such-option").code, 2);
   // bad input: the message names file:line
-  const auto bad = write_text("bad.poly", "4 2 0 0\n1 0 0\n2 1 zero\n");
+  const auto bad = pdd::test::write_temp_file("bad.poly", "4 2 0 0\n1 0 0\n2 1 zero\n");
   auto r = run(PDD_MESH_EXE, bad);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("bad.poly:3:"), std::string::npos) << r.output;
   // missing file
   EXPECT_EQ(run(PDD_MESH_EXE, "/nonexistent/x.poly").code, 1);
   // invalid geometry names the ids: a bow tie (crossing segments)
-  const auto bow = write_text("bow.poly", "4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n"
-                                          "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
+  const auto bow = pdd::test::write_temp_file("bow.poly", "4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n"
+                                                          "4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
   r = run(PDD_MESH_EXE, bow);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("segment"), std::string::npos) << r.output;
@@ -162,8 +157,8 @@ TEST(PddMesh, ExitCodesAndMessages) {
 
 TEST(PddMesh, ShieldsSmallInputAngles) {
   // a 5.7 deg input angle: shielded (dissertation 8.1), verified, reported in the stats
-  const auto wedge = write_text("wedge.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
-                                              "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
+  const auto wedge = pdd::test::write_temp_file("wedge.poly", "3 2 0 0\n1 0 0\n2 10 0\n3 10 1\n"
+                                                              "3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
   for (const char* n : {"1", "4"}) {
     const auto stats = pdd::test::temp_path(std::string("wedge") + n + ".json");
     const auto r = run(PDD_MESH_EXE, wedge + " --max-area 0.05 --verify --threads 1 --subdomains " +
@@ -180,7 +175,7 @@ TEST(PddMesh, ShieldsSmallInputAngles) {
 TEST(PddMesh, FailedRunLeavesNoOutputFile) {
   const auto out = pdd::test::temp_path("never.vtu");
   fs::remove(out);
-  const auto bad = write_text("trunc.poly", "4 2 0 0\n1 0 0\n");
+  const auto bad = pdd::test::write_temp_file("trunc.poly", "4 2 0 0\n1 0 0\n");
   EXPECT_EQ(run(PDD_MESH_EXE, bad + " -o " + out.string()).code, 1);
   EXPECT_FALSE(fs::exists(out));
   // an output directory that does not exist: error, and no file anywhere
@@ -216,10 +211,10 @@ TEST(PddDecompose, WritesReadableDecompositionAndStats) {
 
 TEST(PddDecompose, MaxAreaPlansThePathPddMeshBuilds) {
   // --max-area: the shields and the decoupling path of a pdd-mesh run, without meshing
-  const auto star =
-      write_text("star.poly", "8 2 0 0\n1 0 -1\n2 0.2 -0.2\n3 1 0\n4 0.2 0.2\n5 0 1\n6 -0.2 0.2\n"
-                              "7 -1 0\n8 -0.2 -0.2\n8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 7\n"
-                              "7 7 8\n8 8 1\n0\n");
+  const auto star = pdd::test::write_temp_file(
+      "star.poly", "8 2 0 0\n1 0 -1\n2 0.2 -0.2\n3 1 0\n4 0.2 0.2\n5 0 1\n6 -0.2 0.2\n"
+                   "7 -1 0\n8 -0.2 -0.2\n8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 5\n5 5 6\n6 6 7\n"
+                   "7 7 8\n8 8 1\n0\n");
   const auto plan = pdd::test::temp_path("plan.json"), mesh = pdd::test::temp_path("plan_m.json");
   const auto r =
       run(PDD_DECOMPOSE_EXE,
@@ -242,7 +237,8 @@ TEST(PddDecompose, MaxAreaPlansThePathPddMeshBuilds) {
 TEST(PddDecompose, UsageAndBadInput) {
   EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly).code, 2); // --subdomains is required
   EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly + " -n 4 --algorithm 3").code, 2);
-  const auto bad = write_text("bad.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 9\n");
+  const auto bad =
+      pdd::test::write_temp_file("bad.poly", "3 2 0 0\n1 0 0\n2 1 0\n3 0 1\n3 0\n1 1 2\n2 2 9\n");
   const auto r = run(PDD_DECOMPOSE_EXE, bad + " -n 4");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("bad.poly:7:"), std::string::npos) << r.output;
@@ -250,7 +246,7 @@ TEST(PddDecompose, UsageAndBadInput) {
 
 TEST(DecompositionFormat, MalformedFilesNameTheLine) {
   const auto check = [](const std::string& text, const std::string& where) {
-    const auto p = write_text("bad.pdd", text);
+    const auto p = pdd::test::write_temp_file("bad.pdd", text);
     try {
       (void)pdd::read_decomposition(p);
       ADD_FAILURE() << "accepted: " << text;

@@ -16,6 +16,8 @@
 #include <pdd/parallel/tbb_executor.hpp>
 
 #include "mesh_compare.hpp"
+#include "recording_sink.hpp"
+#include "test_files.hpp"
 #include "test_support.hpp"
 #include "verified.hpp"
 
@@ -37,40 +39,8 @@ using pdd::index_t;
 using pdd::point;
 using pdd::test::hand_case;
 
-/// Keeps a copy of every delivered mesh (by id) and counts deliveries.
-struct recording_sink {
-  std::mutex m;
-  std::map<index_t, pdd::triangle_mesh> meshes;
-  std::size_t deliveries = 0;
-  bool finished = false;
-  void consume(index_t id, pdd::triangle_mesh&& mesh) {
-    const std::lock_guard lock(m);
-    meshes[id] = std::move(mesh);
-    ++deliveries;
-  }
-  void finish() { finished = true; }
-};
-static_assert(pdd::MeshSink<recording_sink>);
-
-/// Forwards to two sinks (the first gets a copy).
-template <class A, class B>
-struct tee_sink {
-  A& a;
-  B& b;
-  void start(index_t n) {
-    if constexpr (requires { a.start(n); }) a.start(n);
-    if constexpr (requires { b.start(n); }) b.start(n);
-  }
-  void consume(index_t id, pdd::triangle_mesh&& mesh) {
-    pdd::triangle_mesh copy = mesh;
-    a.consume(id, std::move(copy));
-    b.consume(id, std::move(mesh));
-  }
-  void finish() {
-    a.finish();
-    b.finish();
-  }
-};
+using pdd::test::recording_sink;
+using pdd::test::tee_sink;
 
 struct run_result {
   pdd::triangle_mesh mesh;
@@ -346,13 +316,14 @@ TEST(Sinks, VtuDirectorySinkWritesEveryPiece) {
   EXPECT_TRUE(bitwise_equal(merged, ms.mesh()));
 
   // Read the pieces back with an independent reader (meshio) and compare bit for bit.
-  if (std::system("/usr/bin/python3 -c 'import meshio' >/dev/null 2>&1") != 0)
+  if (!pdd::test::python_has("meshio"))
     GTEST_SKIP() << "/usr/bin/python3 with meshio is not available";
-  const auto script = dir / "dump.py";
   const auto dump = dir / "dump.txt";
-  {
-    std::ofstream py(script);
-    py << "import meshio, re, sys\n"
+  std::string log;
+  ASSERT_EQ(
+      pdd::test::run_python(
+          dir,
+          "import meshio, re, sys\n"
           "d = sys.argv[1]\n"
           "src = re.findall(r'Source=\"([^\"]+)\"', open(d + '/mesh.pvtu').read())\n"
           "out = open(sys.argv[2], 'w')\n"
@@ -362,11 +333,10 @@ TEST(Sinks, VtuDirectorySinkWritesEveryPiece) {
           "    sub = m.cell_data['subdomain'][0]\n"
           "    out.write('%s %d %d %d\\n' % (f, len(m.points), len(tri), int(sub[0])))\n"
           "    for p in m.points: out.write('%s %s\\n' % (float(p[0]).hex(), float(p[1]).hex()))\n"
-          "    for t in tri: out.write('%d %d %d\\n' % tuple(t))\n";
-  }
-  const std::string cmd =
-      "/usr/bin/python3 " + script.string() + " " + dir.string() + " " + dump.string();
-  ASSERT_EQ(std::system(cmd.c_str()), 0);
+          "    for t in tri: out.write('%d %d %d\\n' % tuple(t))\n",
+          "'" + dir.string() + "' '" + dump.string() + "'", log),
+      0)
+      << log;
   std::ifstream in(dump);
   for (index_t s = 0; s < 4; ++s) {
     std::string name;

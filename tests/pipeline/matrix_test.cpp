@@ -12,6 +12,7 @@
 #include <pdd/mesh/verify.hpp>
 
 #include "mesh_compare.hpp"
+#include "recording_sink.hpp"
 #include "test_support.hpp"
 #include "verified.hpp"
 
@@ -25,19 +26,6 @@
 namespace {
 
 using pdd::test::bitwise_equal;
-
-/// A per-subdomain MeshSink that keeps what it is given, as a file sink would write it.
-struct collecting_sink {
-  std::mutex m;
-  std::vector<pdd::triangle_mesh> parts;
-  void start(pdd::index_t n) { parts.resize(n); }
-  void consume(pdd::index_t id, pdd::triangle_mesh&& mesh) {
-    const std::lock_guard lock(m);
-    parts.at(id) = std::move(mesh);
-  }
-  void finish() {}
-};
-static_assert(pdd::MeshSink<collecting_sink>);
 
 struct named_domain {
   std::string name;
@@ -78,10 +66,11 @@ TEST(UniformMatrix, VerifiedDeterministicAndSinkConsistent) {
       o.threads = 2;
       EXPECT_TRUE(bitwise_equal(one.mesh, pdd::generate(d, o).mesh)) << "1 vs 2 threads";
 
-      collecting_sink sink;
+      pdd::test::recording_sink sink;
       pdd::generate(d, o, sink);
-      ASSERT_EQ(sink.parts.size(), n);
-      EXPECT_TRUE(bitwise_equal(one.mesh, pdd::merge_meshes(std::move(sink.parts), 1)))
+      ASSERT_EQ(sink.meshes.size(), n);
+      EXPECT_EQ(sink.started_with, n);
+      EXPECT_TRUE(bitwise_equal(one.mesh, pdd::merge_meshes(sink.take_parts(), 1)))
           << "per-subdomain output does not merge to the merged mesh";
     }
   }

@@ -225,22 +225,29 @@ TEST(ShieldMadd, NoSeparatorEndsAtASmallAngle) {
 TEST(ShieldMesh, SharedGeometries) {
   const auto files = pdd::test::shared_poly_files();
   if (files.empty()) GTEST_SKIP() << "no shared data";
+  // What was checked: files meshed monolithically, decoupled meshes compared across thread
+  // counts, decouplings checked without meshing (too many split points for a quick test), and
+  // files that pdd rejects (not made of closed loops; printed with the reason).
+  std::size_t meshed = 0, decoupled = 0, decoupled_only = 0;
+  std::vector<std::string> rejected;
   for (const auto& f : files) {
+    const std::string name = f.filename().string();
     pdd::pslg g;
     try {
       g = pdd::read_poly(f.string());
       pdd::validate(g);
-    } catch (const pdd::error&) {
-      continue; // not made of closed loops
+    } catch (const pdd::error& e) {
+      rejected.push_back(name + ": " + e.what());
+      continue;
     }
     const pdd::pslg_properties p = pdd::analyze(g);
     const double area = p.area / 3000.0; // coarse: a few thousand triangles
-    const std::string name = f.filename().string();
     std::printf("%s: min angle %.2f deg\n", name.c_str(), p.min_angle_deg);
     std::fflush(stdout);
     const auto m1 = check_mesh(g, area, 1, 1, name);
     std::printf("  monolithic %zu triangles\n", m1.triangles.size());
     std::fflush(stdout);
+    ++meshed;
     for (const std::size_t n : {2u, 16u, 64u}) {
       // The uniform method refines every separator to k <= lfs_min: where a tiny feature makes
       // that too fine for a quick test, only the shielding and decoupling are checked.
@@ -253,12 +260,25 @@ TEST(ShieldMesh, SharedGeometries) {
       std::printf("  N=%zu k %.3g split points %zu shielded %zu\n", n, dd.k, dd.num_split_points(),
                   dd.num_shielded_triangles());
       std::fflush(stdout);
-      if (dd.num_split_points() > 40000) continue;
+      EXPECT_GT(dd.k, 0.0) << name << " N=" << n;
+      if (dd.num_split_points() > 40000) {
+        ++decoupled_only;
+        continue;
+      }
       const auto a = check_mesh(g, area, n, 1, name);
       std::printf("  N=%zu %zu triangles\n", n, a.triangles.size());
       std::fflush(stdout);
       const auto b = check_mesh(g, area, n, 2, name);
       expect_same(a, b, name);
+      ++decoupled;
     }
   }
+  for (const auto& r : rejected)
+    std::printf("rejected (skipped): %s\n", r.c_str());
+  std::printf("%zu files: %zu meshed (%zu decoupled meshes, %zu decouplings only), %zu rejected\n",
+              files.size(), meshed, decoupled, decoupled_only, rejected.size());
+  EXPECT_EQ(meshed + rejected.size(), files.size());
+  EXPECT_GT(meshed, 0u) << "no shared geometry was meshed";
+  EXPECT_GT(decoupled, 0u) << "no decoupled mesh was compared";
+  EXPECT_EQ(decoupled + decoupled_only, 3 * meshed);
 }
