@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
   const auto t0 = std::chrono::steady_clock::now();
   const auto result =
       pdd::cgal::mesher{}.mesh(domain, criteria, pdd::uniform_sizing{criteria.max_area});
-  const double seconds = pdd::detail::seconds_since(t0);
+  const double seconds = pdd::seconds_since(t0);
   const auto st = pdd::compute_statistics(result.mesh);
 
   nlohmann::json j;
@@ -46,10 +46,10 @@ int main(int argc, char** argv) {
   j["triangles"] = st.triangles;
   j["vertices"] = st.vertices;
   j["seconds"] = seconds;
-  j["cpu_seconds"] = pdd::detail::cpu_seconds();
+  j["cpu_seconds"] = pdd::cpu_seconds();
   j["us_per_triangle"] = 1e6 * seconds / static_cast<double>(st.triangles);
   j["min_angle_deg"] = st.min_angle_deg;
-  j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
+  j["peak_rss_mib"] = pdd::peak_rss_mib();
   std::cout << j.dump() << std::endl;
   return 0;
 }

@@ -194,7 +194,7 @@ nlohmann::json run_madd(const pdd::pslg& g, std::size_t n, unsigned threads, int
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = clock_type::now();
     d = pdd::decompose(g, o, pdd::default_partitioner{}, &st);
-    best = std::min(best, pdd::detail::seconds_since(t0));
+    best = std::min(best, pdd::seconds_since(t0));
   }
   const pdd::decomposition_report rep = pdd::validate_decomposition(d, g);
   nlohmann::json j;
@@ -386,11 +386,11 @@ nlohmann::json run_metis(const pdd::pslg& g, std::size_t n, int repeats) {
   for (int r = 0; r < repeats; ++r) {
     const auto t0 = clock_type::now();
     mesh = pdd::cgal::mesher{}.mesh(g, criteria, pdd::uniform_sizing{criteria.max_area});
-    const double ms = pdd::detail::seconds_since(t0);
+    const double ms = pdd::seconds_since(t0);
     const auto t1 = clock_type::now();
     me = edges_of(mesh.mesh.triangles);
     part = metis_parts(mesh.mesh, me, static_cast<idx_t>(n));
-    const double ps = pdd::detail::seconds_since(t1);
+    const double ps = pdd::seconds_since(t1);
     if (ms + ps < best) std::tie(best, mesh_s, part_s) = std::tuple(ms + ps, ms, ps);
   }
   const std::size_t bad = disconnected_parts(me, part, n);
@@ -440,7 +440,7 @@ int main(int argc, char** argv) {
     nlohmann::json r =
         method == "madd" ? run_madd(g, n, threads, repeats) : run_metis(g, n, repeats);
     j.update(r);
-    j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
+    j["peak_rss_mib"] = pdd::peak_rss_mib();
     std::cout << j.dump() << std::endl;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_madd: %s\n", e.what());

@@ -50,7 +50,7 @@ int run(cli_options o) {
   const pdd::pslg domain = pdd::read_poly(o.input);
   const pdd::pslg_properties props = pdd::analyze(domain); // validates
   o.madd.smoothing = !o.no_smoothing;
-  if (!o.quiet && pdd::detail::stderr_is_terminal())
+  if (!o.quiet && pdd::stderr_is_terminal())
     std::fprintf(stderr, "\r\033[Kpdd-decompose: decomposing into %zu subdomains",
                  o.madd.subdomains);
   pdd::decomposition_statistics st;
@@ -72,13 +72,13 @@ int run(cli_options o) {
   } else {
     d = pdd::decompose(domain, o.madd, pdd::default_partitioner{}, &st);
   }
-  if (!o.quiet && pdd::detail::stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
+  if (!o.quiet && pdd::stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
   const pdd::decomposition_report check =
       pdd::validate_decomposition(d, domain, {.min_angle_deg = o.madd.min_separator_angle_deg});
 
   if (!o.output.empty()) pdd::write_decomposition(o.output, d);
   if (!o.svg.empty()) pdd::write_svg(o.svg, d);
-  const double total = pdd::detail::seconds_since(t0);
+  const double total = pdd::seconds_since(t0);
   if (!o.stats.empty()) {
     std::vector<double> lengths = st.separator_length_per_subdomain;
     std::sort(lengths.begin(), lengths.end());
@@ -109,7 +109,7 @@ int run(cli_options o) {
       j["split_points"] = path->split_points;
       j["shielded_triangles"] = path->shielded_triangles;
     }
-    j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
+    j["peak_rss_mib"] = pdd::peak_rss_mib();
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
   }
   if (!o.quiet) {

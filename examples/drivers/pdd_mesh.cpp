@@ -65,7 +65,7 @@ public:
     const std::size_t tri = triangles_.fetch_add(triangles) + triangles;
     if (!enabled_) return;
     const std::lock_guard lock(mutex_);
-    const double s = pdd::detail::seconds_since(t0_);
+    const double s = pdd::seconds_since(t0_);
     const double eta = done < total_ ? s / static_cast<double>(done) * (total_ - done) : 0.0;
     std::fprintf(stderr,
                  "\r\033[Kpdd-mesh: meshing %zu/%zu subdomains, %zu triangles, %.2f M tri/s, "
@@ -106,169 +106,196 @@ private:
   progress& bar_;
 };
 
-int run(const cli_options& o) {
-  const auto t_start = std::chrono::steady_clock::now();
-  progress bar(!o.quiet && pdd::detail::stderr_is_terminal());
-
-  bar.stage("reading input");
-  const pdd::pslg domain = pdd::read_poly(o.input);
-  const pdd::pslg_properties props = pdd::analyze(domain); // validates, throws geometry_error
-  // Input angles below 60 deg are shielded (dissertation 8.1): each becomes one shielded
-  // triangle whose smallest angle is the input angle; the quality bound holds elsewhere.
-  const double t_read = pdd::detail::seconds_since(t_start);
-
-  pdd::generate_options g;
-  g.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
-  g.subdomains = o.subdomains;
-  g.threads = o.threads;
-  const pdd::uniform_sizing sizing{o.max_area};
-
-  bar.stage("decomposing and meshing");
-  std::optional<pdd::triangle_mesh> mesh;
+/// Everything one pdd-mesh run produces, filled phase by phase.
+struct mesh_run {
+  pdd::pslg domain;
+  pdd::pslg_properties props;
+  pdd::generate_options options;
+  pdd::uniform_sizing sizing;
+  std::optional<pdd::triangle_mesh> mesh; ///< absent with --output-per-subdomain
   pdd::generate_statistics gs;
   std::optional<pdd::mesh_statistics> st;
   std::optional<pdd::shielding_statistics> sst;
+  std::optional<pdd::verification_report> report;
+  std::optional<std::size_t> monolithic_triangles;
+  double t_read = 0.0, t_verify = 0.0, t_monolithic = 0.0, t_write = 0.0, t_total = 0.0;
+
+  std::size_t triangles() const { return mesh ? mesh->triangles.size() : gs.triangles; }
+};
+
+/// Reads and validates the input and sets up the options. Input angles below 60 deg are
+/// shielded by the pipeline (dissertation 8.1): each becomes one shielded triangle whose
+/// smallest angle is the input angle; the quality bound holds elsewhere.
+void read_input(const cli_options& o, mesh_run& r) {
+  const auto t0 = std::chrono::steady_clock::now();
+  r.domain = pdd::read_poly(o.input);
+  r.props = pdd::analyze(r.domain); // validates, throws geometry_error
+  r.t_read = pdd::seconds_since(t0);
+  r.options.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
+  r.options.subdomains = o.subdomains;
+  r.options.threads = o.threads;
+  r.sizing = pdd::uniform_sizing{o.max_area};
+}
+
+/// Meshes into a merged mesh, or with --output-per-subdomain into files, measuring each
+/// subdomain mesh on its way (nothing is kept).
+void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
   if (!o.per_subdomain_dir.empty()) {
-    // nothing is kept: each subdomain mesh is measured on its way to its file
     pdd::vtu_directory_sink files(o.per_subdomain_dir);
-    pdd::statistics_sink measured(files, domain, sizing);
+    pdd::statistics_sink measured(files, r.domain, r.sizing);
     progress_sink sink(measured, bar);
-    gs = pdd::generate(domain, g, sink);
-    st = measured.statistics();
-    sst = measured.shielding();
+    r.gs = pdd::generate(r.domain, r.options, sink);
+    r.st = measured.statistics();
+    r.sst = measured.shielding();
+  } else if (o.subdomains == 1) {
+    pdd::generate_result g = pdd::generate(r.domain, r.options);
+    r.gs = std::move(g.statistics);
+    r.mesh = std::move(g.mesh);
   } else {
     pdd::merge_sink merged(o.threads);
     progress_sink sink(merged, bar);
-    if (o.subdomains == 1) {
-      pdd::generate_result r = pdd::generate(domain, g);
-      gs = std::move(r.statistics);
-      mesh = std::move(r.mesh);
-    } else {
-      gs = pdd::generate(domain, g, sink);
-      mesh = merged.take();
-      gs.vertices = mesh->vertices.size();
-    }
+    r.gs = pdd::generate(r.domain, r.options, sink);
+    r.mesh = merged.take();
+    r.gs.vertices = r.mesh->vertices.size();
   }
+}
 
-  std::optional<pdd::verification_report> report;
-  double t_verify = 0.0; // part of the total
-  if (mesh) {
-    bar.stage("statistics");
-    st = pdd::compute_statistics(*mesh, sizing);
-    sst = pdd::compute_shielding_statistics(*mesh, domain);
-    if (o.verify) {
-      bar.stage("verifying");
-      const auto t0 = std::chrono::steady_clock::now();
-      pdd::verify_options vo{.criteria = g.criteria};
-      // shielded triangles keep their input angle: exempt from the quality check only
-      vo.quality_exempt = pdd::find_shielded_triangles(*mesh, domain);
-      report = pdd::verify(*mesh, domain, vo, sizing);
-      t_verify = pdd::detail::seconds_since(t0);
-    }
+/// Statistics of the merged mesh and, with --verify, its verification (shielded triangles
+/// keep their input angle: exempt from the quality check only).
+void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
+  if (!r.mesh) return;
+  bar.stage("statistics");
+  r.st = pdd::compute_statistics(*r.mesh, r.sizing);
+  r.sst = pdd::compute_shielding_statistics(*r.mesh, r.domain);
+  if (!o.verify) return;
+  bar.stage("verifying");
+  const auto t0 = std::chrono::steady_clock::now();
+  pdd::verify_options vo{.criteria = r.options.criteria};
+  vo.quality_exempt = pdd::find_shielded_triangles(*r.mesh, r.domain);
+  r.report = pdd::verify(*r.mesh, r.domain, vo, r.sizing);
+  r.t_verify = pdd::seconds_since(t0);
+}
+
+/// --compare-monolithic: the kernel on the whole domain, counted only (not part of the total).
+void compare_monolithic(mesh_run& r, progress& bar) {
+  bar.stage("monolithic run for comparison");
+  const auto t0 = std::chrono::steady_clock::now();
+  pdd::generate_options m = r.options;
+  m.subdomains = 1;
+  pdd::counting_sink counted;
+  pdd::generate(r.domain, m, counted);
+  r.monolithic_triangles = counted.triangles();
+  r.t_monolithic = pdd::seconds_since(t0);
+}
+
+/// The mesh and quality part of the --stats JSON.
+void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) {
+  const pdd::generate_statistics& gs = r.gs;
+  j["input"] = o.input;
+  j["triangles"] = r.triangles();
+  j["vertices"] = r.mesh ? nlohmann::json(r.mesh->vertices.size()) : nullptr;
+  j["subdomains"] = gs.subdomains;
+  j["threads"] = gs.threads;
+  j["k"] = gs.k;
+  j["split_points"] = gs.split_points;
+  j["interface_splits"] = gs.interface_splits;
+  j["remeshed_subdomains"] = gs.remeshed_subdomains;
+  j["area_domain"] = r.props.area;
+  j["min_input_angle_deg"] = r.props.min_angle_deg;
+  j["lfs_min"] = r.props.lfs_min;
+  j["shielded_triangles"] = gs.shielded_triangles;
+  j["shield_splits"] = gs.shield_splits;
+  if (r.sst) {
+    j["min_angle_unshielded_deg"] = r.sst->min_angle_unshielded_deg;
+    j["max_ratio_unshielded"] = r.sst->max_ratio_unshielded;
+    j["max_ratio_shielded"] = r.sst->max_ratio_shielded;
   }
-  std::optional<std::size_t> monolithic_triangles;
-  double t_monolithic = 0.0; // not part of this run's total
-  if (o.compare_monolithic) {
-    bar.stage("monolithic run for comparison");
-    const auto t0 = std::chrono::steady_clock::now();
-    pdd::generate_options m = g;
-    m.subdomains = 1;
-    pdd::counting_sink counted; // only the count is reported: the mesh is not kept
-    pdd::generate(domain, m, counted);
-    monolithic_triangles = counted.triangles();
-    t_monolithic = pdd::detail::seconds_since(t0);
+  if (r.st) {
+    j["min_angle_deg"] = r.st->min_angle_deg;
+    j["max_angle_deg"] = r.st->max_angle_deg;
+    j["max_ratio"] = r.st->max_ratio;
+    j["max_area_ratio"] = r.st->max_area_ratio;
+    j["area_mesh"] = r.st->area;
+    j["angle_histogram_deg"] = r.st->angle_histogram;
   }
+}
+
+/// The verification, comparison, decomposition and timing part of the --stats JSON.
+void add_run_stats(const mesh_run& r, nlohmann::json& j) {
+  j["verified"] = r.report.has_value();
+  j["delaunay_violations"] = r.report ? nlohmann::json(r.report->delaunay_violations) : nullptr;
+  j["conforming"] = r.report ? nlohmann::json(r.report->ok()) : nullptr;
+  if (r.monolithic_triangles) {
+    j["monolithic_triangles"] = *r.monolithic_triangles;
+    j["over_refinement_pct"] =
+        100.0 *
+        (static_cast<double>(r.triangles()) / static_cast<double>(*r.monolithic_triangles) - 1.0);
+  }
+  if (r.gs.subdomains > 1) {
+    j["min_separator_angle_deg"] = r.gs.decomposition.min_separator_angle_deg;
+    j["separator_length_total"] = r.gs.decomposition.separator_length_total;
+  }
+  const pdd::generate_timings& t = r.gs.timings;
+  j["timings"] = {{"read", r.t_read},  {"decompose", t.decompose}, {"decouple", t.decouple},
+                  {"mesh", t.mesh},    {"merge", t.merge},         {"write", r.t_write},
+                  {"total", r.t_total}};
+  if (r.report) j["timings"]["verify"] = r.t_verify;
+  if (r.monolithic_triangles) j["timings"]["monolithic_comparison"] = r.t_monolithic;
+  j["peak_rss_mib"] = pdd::peak_rss_mib();
+}
+
+/// The summary lines on stdout (not with --quiet).
+void print_summary(const cli_options& o, const mesh_run& r) {
+  std::printf("pdd-mesh: %zu triangles in %zu subdomain(s) on %u thread(s), %.3f s\n",
+              r.triangles(), r.gs.subdomains, r.gs.threads, r.t_total);
+  if (r.st)
+    std::printf("pdd-mesh: min angle %.3f deg, max area / bound %.4f\n", r.st->min_angle_deg,
+                r.st->max_area_ratio);
+  if (r.sst && r.gs.shielded_triangles > 0)
+    std::printf("pdd-mesh: %zu shielded triangles (input angles down to %.3f deg), min angle "
+                "of the others %.3f deg\n",
+                r.gs.shielded_triangles, r.sst->min_input_angle_deg,
+                r.sst->min_angle_unshielded_deg);
+  if (r.mesh && !o.output.empty()) std::printf("pdd-mesh: wrote %s\n", o.output.c_str());
+  if (!o.per_subdomain_dir.empty())
+    std::printf("pdd-mesh: wrote %s/mesh.pvtu and %zu subdomain files\n",
+                o.per_subdomain_dir.c_str(), r.gs.subdomains);
+  if (r.mesh && !o.svg.empty()) std::printf("pdd-mesh: wrote %s\n", o.svg.c_str());
+  if (!o.stats.empty()) std::printf("pdd-mesh: wrote %s\n", o.stats.c_str());
+}
+
+int run(const cli_options& o) {
+  const auto t_start = std::chrono::steady_clock::now();
+  progress bar(!o.quiet && pdd::stderr_is_terminal());
+  mesh_run r;
+  bar.stage("reading input");
+  read_input(o, r);
+  bar.stage("decomposing and meshing");
+  generate_mesh(o, r, bar);
+  measure_and_verify(o, r, bar); // verification time is part of the total
+  if (o.compare_monolithic) compare_monolithic(r, bar);
 
   bar.stage("writing");
   const auto t_write0 = std::chrono::steady_clock::now();
-  if (mesh && !o.output.empty()) pdd::write_mesh(o.output, *mesh);
-  if (mesh && !o.svg.empty()) pdd::write_svg(o.svg, *mesh);
-  const double t_write = pdd::detail::seconds_since(t_write0);
-  const double t_total = pdd::detail::seconds_since(t_start) - t_monolithic;
+  if (r.mesh && !o.output.empty()) pdd::write_mesh(o.output, *r.mesh);
+  if (r.mesh && !o.svg.empty()) pdd::write_svg(o.svg, *r.mesh);
+  r.t_write = pdd::seconds_since(t_write0);
+  r.t_total = pdd::seconds_since(t_start) - r.t_monolithic;
   bar.clear();
-
-  const std::size_t triangles = mesh ? mesh->triangles.size() : gs.triangles;
   if (!o.stats.empty()) {
     nlohmann::json j;
-    j["input"] = o.input;
-    j["triangles"] = triangles;
-    j["vertices"] = mesh ? nlohmann::json(mesh->vertices.size()) : nullptr;
-    j["subdomains"] = gs.subdomains;
-    j["threads"] = gs.threads;
-    j["k"] = gs.k;
-    j["split_points"] = gs.split_points;
-    j["interface_splits"] = gs.interface_splits;
-    j["remeshed_subdomains"] = gs.remeshed_subdomains;
-    j["area_domain"] = props.area;
-    j["min_input_angle_deg"] = props.min_angle_deg;
-    j["lfs_min"] = props.lfs_min;
-    j["shielded_triangles"] = gs.shielded_triangles;
-    j["shield_splits"] = gs.shield_splits;
-    if (sst) {
-      j["min_angle_unshielded_deg"] = sst->min_angle_unshielded_deg;
-      j["max_ratio_unshielded"] = sst->max_ratio_unshielded;
-      j["max_ratio_shielded"] = sst->max_ratio_shielded;
-    }
-    if (st) {
-      j["min_angle_deg"] = st->min_angle_deg;
-      j["max_angle_deg"] = st->max_angle_deg;
-      j["max_ratio"] = st->max_ratio;
-      j["max_area_ratio"] = st->max_area_ratio;
-      j["area_mesh"] = st->area;
-      j["angle_histogram_deg"] = st->angle_histogram;
-    }
-    j["verified"] = report.has_value();
-    j["delaunay_violations"] = report ? nlohmann::json(report->delaunay_violations) : nullptr;
-    j["conforming"] = report ? nlohmann::json(report->ok()) : nullptr;
-    if (monolithic_triangles) {
-      j["monolithic_triangles"] = *monolithic_triangles;
-      j["over_refinement_pct"] =
-          100.0 *
-          (static_cast<double>(triangles) / static_cast<double>(*monolithic_triangles) - 1.0);
-    }
-    if (gs.subdomains > 1) {
-      j["min_separator_angle_deg"] = gs.decomposition.min_separator_angle_deg;
-      j["separator_length_total"] = gs.decomposition.separator_length_total;
-    }
-    j["timings"] = {{"read", t_read},
-                    {"decompose", gs.timings.decompose},
-                    {"decouple", gs.timings.decouple},
-                    {"mesh", gs.timings.mesh},
-                    {"merge", gs.timings.merge},
-                    {"write", t_write},
-                    {"total", t_total}};
-    if (report) j["timings"]["verify"] = t_verify;
-    if (monolithic_triangles) j["timings"]["monolithic_comparison"] = t_monolithic;
-    j["peak_rss_mib"] = pdd::detail::peak_rss_mib();
+    add_mesh_stats(o, r, j);
+    add_run_stats(r, j);
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
   }
-
-  if (!o.quiet) {
-    std::printf("pdd-mesh: %zu triangles in %zu subdomain(s) on %u thread(s), %.3f s\n", triangles,
-                gs.subdomains, gs.threads, t_total);
-    if (st)
-      std::printf("pdd-mesh: min angle %.3f deg, max area / bound %.4f\n", st->min_angle_deg,
-                  st->max_area_ratio);
-    if (sst && gs.shielded_triangles > 0)
-      std::printf("pdd-mesh: %zu shielded triangles (input angles down to %.3f deg), min angle "
-                  "of the others %.3f deg\n",
-                  gs.shielded_triangles, sst->min_input_angle_deg, sst->min_angle_unshielded_deg);
-    if (mesh && !o.output.empty()) std::printf("pdd-mesh: wrote %s\n", o.output.c_str());
-    if (!o.per_subdomain_dir.empty())
-      std::printf("pdd-mesh: wrote %s/mesh.pvtu and %zu subdomain files\n",
-                  o.per_subdomain_dir.c_str(), gs.subdomains);
-    if (mesh && !o.svg.empty()) std::printf("pdd-mesh: wrote %s\n", o.svg.c_str());
-    if (!o.stats.empty()) std::printf("pdd-mesh: wrote %s\n", o.stats.c_str());
+  if (!o.quiet) print_summary(o, r);
+  if (r.report && !r.report->ok()) {
+    std::fprintf(stderr, "pdd-mesh: verification FAILED\n");
+    for (const auto& m : r.report->messages)
+      std::fprintf(stderr, "  %s\n", m.c_str());
+    return verification_failed;
   }
-  if (report) {
-    if (!report->ok()) {
-      std::fprintf(stderr, "pdd-mesh: verification FAILED\n");
-      for (const auto& m : report->messages)
-        std::fprintf(stderr, "  %s\n", m.c_str());
-      return verification_failed;
-    }
-    if (!o.quiet) std::printf("pdd-mesh: verification passed\n");
-  }
+  if (r.report && !o.quiet) std::printf("pdd-mesh: verification passed\n");
   return ok;
 }
 

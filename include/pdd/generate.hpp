@@ -58,7 +58,7 @@ generate_result generate(const pslg& domain, const generate_options& options = {
     const auto tm = std::chrono::steady_clock::now();
     r.mesh = pl.mesh_whole(pl.statistics().shielded_triangles);
     generate_statistics& st = pl.statistics();
-    st.timings.mesh = detail::seconds_since(tm);
+    st.timings.mesh = seconds_since(tm);
     st.triangles = r.mesh.triangles.size();
   } else {
     merge_sink sink(options.threads);
@@ -67,7 +67,7 @@ generate_result generate(const pslg& domain, const generate_options& options = {
   }
   r.statistics = std::move(pl.statistics());
   r.statistics.vertices = r.mesh.vertices.size();
-  r.statistics.timings.total = detail::seconds_since(t0);
+  r.statistics.timings.total = seconds_since(t0);
   return r;
 }
 
@@ -84,7 +84,7 @@ generate_statistics generate(const pslg& domain, const generate_options& options
   pl.template check_memory<S>(); // up front, before any work
   pl.mesh(sink);
   generate_statistics st = std::move(pl.statistics());
-  st.timings.total = detail::seconds_since(t0);
+  st.timings.total = seconds_since(t0);
   return st;
 }
 

@@ -109,7 +109,7 @@ public:
       decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
       stats_.subdomains = decomposition_.subdomains.size();
     }
-    stats_.timings.decompose = detail::seconds_since(t0);
+    stats_.timings.decompose = seconds_since(t0);
     decomposed_ = true;
     return decomposition_;
   }
@@ -143,7 +143,7 @@ public:
               options_.max_split_point_fraction * stats_.estimated_triangles)
         fall_back_to_whole_domain();
     }
-    stats_.timings.decouple = detail::seconds_since(t0);
+    stats_.timings.decouple = seconds_since(t0);
     decoupled_ = true;
     return decoupled_decomposition_;
   }
@@ -178,7 +178,7 @@ public:
       stats_.per_subdomain = std::move(ms.subdomains);
     }
     stats_.timings.merge = timed.finish_seconds;
-    stats_.timings.mesh = detail::seconds_since(t0) - timed.finish_seconds;
+    stats_.timings.mesh = seconds_since(t0) - timed.finish_seconds;
     const generate_timings& t = stats_.timings;
     stats_.timings.total = t.decompose + t.decouple + t.mesh + t.merge;
     return stats_;

@@ -136,7 +136,7 @@ TEST(Generate, RefusesMeshesThatDoNotFitInMemory) {
   pdd::generate_options o;
   // About 1e9 triangles: 50 GB kept in memory, far more than a test machine has... unless
   // it has; then scale up (the 32-bit index limit refuses beyond ~8e9 anyway).
-  const double phys = static_cast<double>(pdd::detail::physical_memory_bytes());
+  const double phys = static_cast<double>(pdd::physical_memory_bytes());
   const double triangles = std::max(1e9, phys / 20.0);
   o.criteria.max_area = pdd::domain_area(d) / (pdd::mean_triangle_area_fraction * triangles);
   try {

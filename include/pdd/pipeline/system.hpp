@@ -8,7 +8,7 @@
 #include <chrono>
 #include <cstddef>
 
-namespace pdd::detail {
+namespace pdd {
 
 /// Peak resident set size of this process so far, in MiB (getrusage; 0 if unavailable).
 inline double peak_rss_mib() {
@@ -43,4 +43,4 @@ inline double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-} // namespace pdd::detail
+} // namespace pdd
