@@ -1,0 +1,275 @@
+/// \file validate.hpp
+/// Implementation of pdd::validate_decomposition: the checks of one subdomain, of the edges
+/// (external on their input segment, interfaces twice with matching tags), of the input
+/// segments' coverage and of the interface curves.
+#pragma once
+
+#include <pdd/core/kernel.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/decomposition_report.hpp>
+#include <pdd/madd/detail/region.hpp>
+
+#include <CGAL/Polygon_2_algorithms.h>
+#include <CGAL/box_intersection_d.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <map>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+namespace pdd::detail {
+
+/// Segment intersections inside one subdomain (all its loops together): two edges may only
+/// share an endpoint, and consecutive edges may not fold back onto each other.
+inline void check_subdomain_simple(const decomposition& d, std::size_t s,
+                                   std::vector<std::string>& problems) {
+  using box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
+  const subdomain& sd = d.subdomains[s];
+  std::vector<std::pair<index_t, index_t>> edges;
+  for (const auto& l : sd.loops)
+    for (std::size_t i = 0; i < l.size(); ++i)
+      edges.emplace_back(l[i], l[(i + 1) % l.size()]);
+  std::vector<box> boxes;
+  for (std::size_t e = 0; e < edges.size(); ++e) {
+    const point a = d.vertices[edges[e].first], b = d.vertices[edges[e].second];
+    double lo[2] = {std::min(a.x, b.x), std::min(a.y, b.y)};
+    double hi[2] = {std::max(a.x, b.x), std::max(a.y, b.y)};
+    boxes.emplace_back(lo, hi, e);
+  }
+  std::size_t bad = 0;
+  std::string first;
+  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const box& x, const box& y) {
+    const auto [a, b] = edges[x.info()];
+    const auto [c, e] = edges[y.info()];
+    const epick::Point_2 pa(d.vertices[a].x, d.vertices[a].y), pb(d.vertices[b].x, d.vertices[b].y);
+    const epick::Point_2 pc(d.vertices[c].x, d.vertices[c].y), pe(d.vertices[e].x, d.vertices[e].y);
+    bool wrong = false;
+    const int shared = (a == c) + (a == e) + (b == c) + (b == e);
+    if (shared >= 2) {
+      wrong = true; // the same edge twice
+    } else if (shared == 1) {
+      const index_t v = (a == c || a == e) ? a : b;
+      const epick::Point_2 pv(d.vertices[v].x, d.vertices[v].y);
+      const epick::Point_2& p = v == a ? pb : pa;
+      const epick::Point_2& q = (v == c) ? pe : pc;
+      wrong = CGAL::collinear(pv, p, q) && CGAL::angle(p, pv, q) == CGAL::ACUTE;
+    } else {
+      wrong = CGAL::do_intersect(epick::Segment_2(pa, pb), epick::Segment_2(pc, pe));
+    }
+    if (wrong && bad++ == 0)
+      first = "edges (" + std::to_string(a) + ", " + std::to_string(b) + ") and (" +
+              std::to_string(c) + ", " + std::to_string(e) + ")";
+  });
+  if (bad > 0)
+    problems.push_back("subdomain " + std::to_string(s) + ": " + std::to_string(bad) +
+                       " pairs of boundary edges intersect, e.g. " + first);
+}
+
+/// Orientation and nesting of one subdomain's loops.
+inline void check_subdomain_loops(const decomposition& d, std::size_t s,
+                                  std::vector<std::string>& problems) {
+  const subdomain& sd = d.subdomains[s];
+  const std::string name = "subdomain " + std::to_string(s);
+  std::vector<std::vector<epick::Point_2>> polys;
+  for (const auto& l : sd.loops) {
+    std::vector<epick::Point_2> p;
+    for (const index_t v : l)
+      p.emplace_back(d.vertices[v].x, d.vertices[v].y);
+    polys.push_back(std::move(p));
+  }
+  for (std::size_t l = 0; l < polys.size(); ++l) {
+    const auto o = CGAL::orientation_2(polys[l].begin(), polys[l].end(), epick());
+    if (o != (l == 0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE))
+      problems.push_back(
+          name + ": loop " + std::to_string(l) +
+          (l == 0 ? " (outer) is not counter-clockwise" : " (hole) is not clockwise"));
+  }
+  for (std::size_t h = 1; h < polys.size(); ++h) {
+    const auto& q = polys[h][0];
+    if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), q, epick()) != CGAL::ON_BOUNDED_SIDE)
+      problems.push_back(name + ": hole loop " + std::to_string(h) +
+                         " is not inside the outer loop");
+    for (std::size_t k = 1; k < polys.size(); ++k)
+      if (k != h && CGAL::bounded_side_2(polys[k].begin(), polys[k].end(), q, epick()) !=
+                        CGAL::ON_UNBOUNDED_SIDE)
+        problems.push_back(name + ": hole loop " + std::to_string(h) + " lies inside hole loop " +
+                           std::to_string(k));
+  }
+}
+
+/// One occurrence of an edge in a subdomain loop.
+struct edge_occurrence {
+  index_t s, from, to;
+  edge_tag tag;
+};
+/// Every loop edge of a decomposition, by its endpoints (smaller id first).
+using decomposition_edges = std::map<std::pair<index_t, index_t>, std::vector<edge_occurrence>>;
+
+/// False (with the problem) when subdomain s has no loops, tags that do not match them, a loop
+/// of fewer than 3 vertices or a vertex id out of range: nothing else can be checked then.
+inline bool check_subdomain_structure(const decomposition& d, std::size_t s,
+                                      std::vector<std::string>& pr) {
+  const subdomain& sd = d.subdomains[s];
+  const std::string name = "subdomain " + std::to_string(s);
+  if (sd.loops.empty() || sd.tags.size() != sd.loops.size()) {
+    pr.push_back(name + ": no loops, or tags do not match the loops");
+    return false;
+  }
+  bool structure_ok = true;
+  std::vector<index_t> all;
+  for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+    const auto& loop = sd.loops[l];
+    if (loop.size() < 3 || sd.tags[l].size() != loop.size()) structure_ok = false;
+    for (const index_t v : loop) {
+      if (v >= d.vertices.size()) structure_ok = false;
+      all.push_back(v);
+    }
+  }
+  if (!structure_ok) {
+    pr.push_back(name + ": a loop has < 3 vertices, a vertex id out of range or wrong tags");
+    return false;
+  }
+  std::sort(all.begin(), all.end());
+  if (std::adjacent_find(all.begin(), all.end()) != all.end())
+    pr.push_back(name + ": vertex " + std::to_string(*std::adjacent_find(all.begin(), all.end())) +
+                 " occurs twice (the subdomain touches itself)");
+  return true;
+}
+
+/// Records the edges of subdomain s, checks its separator angles (Phi0) and its area field;
+/// returns the area of its loops.
+inline double check_subdomain_edges(const decomposition& d, std::size_t s,
+                                    const decomposition_check_options& o, decomposition_report& rep,
+                                    decomposition_edges& edges) {
+  const subdomain& sd = d.subdomains[s];
+  const std::string name = "subdomain " + std::to_string(s);
+  auto& pr = rep.problems;
+  double area = 0.0;
+  for (std::size_t l = 0; l < sd.loops.size(); ++l) {
+    const auto& loop = sd.loops[l];
+    const std::size_t m = loop.size();
+    std::vector<point> pts;
+    for (std::size_t i = 0; i < m; ++i) {
+      pts.push_back(d.vertices[loop[i]]);
+      const index_t a = loop[i], b = loop[(i + 1) % m];
+      const edge_tag& t = sd.tags[l][i];
+      edges[{std::min(a, b), std::max(a, b)}].push_back({static_cast<index_t>(s), a, b, t});
+      if (t.type != edge_tag::kind::interface &&
+          sd.tags[l][(i + m - 1) % m].type != edge_tag::kind::interface)
+        continue;
+      const double ang =
+          interior_angle_deg(d.vertices[loop[(i + m - 1) % m]], d.vertices[a], d.vertices[b]);
+      rep.min_separator_angle_deg = std::min(rep.min_separator_angle_deg, ang);
+      if (ang < o.min_angle_deg - o.angle_tolerance_deg && pr.size() < o.max_problems)
+        pr.push_back(name + ": separator angle " + std::to_string(ang) + " deg at vertex " +
+                     std::to_string(a) + " is below " + std::to_string(o.min_angle_deg));
+    }
+    area += signed_area(pts);
+  }
+  if (std::abs(area - sd.area) > 1e-12 * std::max(1.0, std::abs(area)) + 1e-9 * std::abs(area))
+    pr.push_back(name + ": area field " + std::to_string(sd.area) + " differs from its loops' " +
+                 std::to_string(area));
+  return area;
+}
+
+/// An external edge: in one subdomain, on the input segment it names, with its marker; adds
+/// its length to `covered`.
+inline void check_external_edge(const std::pair<index_t, index_t>& key,
+                                const std::vector<edge_occurrence>& list, const decomposition& d,
+                                const pslg& g, std::vector<double>& covered,
+                                std::vector<std::string>& pr) {
+  const std::string ename =
+      "edge (" + std::to_string(key.first) + ", " + std::to_string(key.second) + ")";
+  const edge_occurrence& x = list[0];
+  if (list.size() != 1) {
+    pr.push_back(ename + " is external but occurs " + std::to_string(list.size()) + " times");
+    return;
+  }
+  if (x.tag.id >= g.segments.size()) {
+    pr.push_back(ename + " names input segment " + std::to_string(x.tag.id) +
+                 ", which does not exist");
+    return;
+  }
+  const segment& sg = g.segments[x.tag.id];
+  const point a = g.vertices[sg.a], b = g.vertices[sg.b];
+  const double len = distance(a, b);
+  auto off = [&](point p) {
+    return std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / len;
+  };
+  if (off(d.vertices[key.first]) > 1e-9 * len || off(d.vertices[key.second]) > 1e-9 * len)
+    pr.push_back(ename + " does not lie on input segment " + std::to_string(x.tag.id));
+  if (x.tag.marker != sg.marker)
+    pr.push_back(ename + " has marker " + std::to_string(x.tag.marker) + ", its segment " +
+                 std::to_string(sg.marker));
+  covered[x.tag.id] += distance(d.vertices[key.first], d.vertices[key.second]);
+}
+
+/// An interface edge: in exactly two subdomains, in opposite directions, with the same
+/// interface id, each other as neighbour, and an existing interface between the two.
+inline void check_interface_edge(const std::pair<index_t, index_t>& key,
+                                 const std::vector<edge_occurrence>& list, const decomposition& d,
+                                 std::vector<std::string>& pr) {
+  const std::string ename =
+      "edge (" + std::to_string(key.first) + ", " + std::to_string(key.second) + ")";
+  if (list.size() != 2) {
+    pr.push_back(ename + " is an interface edge in " + std::to_string(list.size()) +
+                 " subdomains (must be 2)");
+    return;
+  }
+  const edge_occurrence &x = list[0], &y = list[1];
+  if (y.tag.type != edge_tag::kind::interface || x.s == y.s || x.from != y.to ||
+      x.tag.id != y.tag.id || x.tag.neighbour != y.s || y.tag.neighbour != x.s)
+    pr.push_back(ename + ": its two sides (subdomains " + std::to_string(x.s) + ", " +
+                 std::to_string(y.s) + ") do not match (direction, interface id, neighbour)");
+  else if (x.tag.id >= d.interfaces.size() || d.interfaces[x.tag.id].a != std::min(x.s, y.s) ||
+           d.interfaces[x.tag.id].b != std::max(x.s, y.s))
+    pr.push_back(ename + ": interface " + std::to_string(x.tag.id) +
+                 " does not exist or joins other subdomains");
+}
+
+/// The external edges cover every input segment exactly (relative 1e-9).
+inline void check_segment_coverage(const pslg& g, const std::vector<double>& covered,
+                                   std::size_t max_problems, std::vector<std::string>& pr) {
+  for (std::size_t sg = 0; sg < g.segments.size() && pr.size() < max_problems; ++sg) {
+    const double len = distance(g.vertices[g.segments[sg].a], g.vertices[g.segments[sg].b]);
+    if (std::abs(covered[sg] - len) > 1e-9 * len)
+      pr.push_back("input segment " + std::to_string(sg) + " is covered to length " +
+                   std::to_string(covered[sg]) + " of " + std::to_string(len));
+  }
+}
+
+/// Interface curves: each consecutive pair is an edge of that interface, and the curves have
+/// as many edges as the subdomains' interface edges.
+inline void check_interface_curves(const decomposition& d, const decomposition_edges& edges,
+                                   std::size_t max_problems, std::vector<std::string>& pr) {
+  std::size_t curve_edges = 0, interface_edges = 0;
+  for (const auto& [key, list] : edges)
+    if (list[0].tag.type == edge_tag::kind::interface) ++interface_edges;
+  for (std::size_t c = 0; c < d.interfaces.size() && pr.size() < max_problems; ++c) {
+    const interface_curve& ic = d.interfaces[c];
+    if (ic.a >= ic.b || ic.vertices.size() < 2)
+      pr.push_back("interface " + std::to_string(c) + " has a >= b or fewer than two vertices");
+    for (std::size_t k = 0; k + 1 < ic.vertices.size(); ++k) {
+      ++curve_edges;
+      const auto key = std::make_pair(std::min(ic.vertices[k], ic.vertices[k + 1]),
+                                      std::max(ic.vertices[k], ic.vertices[k + 1]));
+      const auto it = edges.find(key);
+      if (it == edges.end() || it->second[0].tag.type != edge_tag::kind::interface ||
+          it->second[0].tag.id != c) {
+        pr.push_back("interface " + std::to_string(c) + ": (" + std::to_string(key.first) + ", " +
+                     std::to_string(key.second) + ") is not one of its edges");
+        break;
+      }
+    }
+  }
+  if (curve_edges != interface_edges && pr.size() < max_problems)
+    pr.push_back("the interface curves have " + std::to_string(curve_edges) + " edges, the " +
+                 "subdomains " + std::to_string(interface_edges));
+}
+
+} // namespace pdd::detail
