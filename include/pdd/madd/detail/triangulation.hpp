@@ -15,6 +15,7 @@
 #pragma once
 
 #include <pdd/core/kernel.hpp>
+#include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/detail/region.hpp>
 
@@ -119,15 +120,9 @@ inline void refine_region_edge(const madd_region& r, std::uint32_t l, std::uint3
   }
 }
 
-/// Builds Z for a region (target piece length h > 0) and its constrained Delaunay
-/// triangulation, bisecting encroached pieces at most max_encroachment_depth times each.
-/// \pre r is a valid region (simple loops, holes inside the outer loop, no shared vertices).
-/// Complexity O(n log n) expected, n = |Z|. Thread-safe (no shared state).
-inline madd_triangulation triangulate_region(const madd_region& r, double h,
-                                             int max_encroachment_depth) {
-  madd_triangulation tr;
-  auto& z = tr.z;
-  // --- static refinement: every region edge in 2^d pieces of length <= h.
+/// Static refinement (4.1): Z for a region, every region edge in 2^d pieces of length <= h,
+/// linked along its loops.
+inline void build_z(const madd_region& r, double h, std::vector<madd_zvertex>& z) {
   for (std::uint32_t l = 0; l < r.loops.size(); ++l) {
     const madd_loop& lp = r.loops[l];
     const auto first = static_cast<std::uint32_t>(z.size());
@@ -155,41 +150,86 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
       z[i].prev = i == first ? last - 1 : i - 1;
     }
   }
-  // --- the constrained Delaunay triangulation of Z.
-  madd_cdt cdt;
-  {
-    std::vector<std::pair<epick::Point_2, std::uint32_t>> pts;
-    pts.reserve(z.size());
-    for (std::uint32_t i = 0; i < z.size(); ++i)
-      pts.emplace_back(epick::Point_2(z[i].p.x, z[i].p.y), i);
-    cdt.insert(pts.begin(), pts.end());
-  }
-  std::vector<madd_cdt::Vertex_handle> handle(z.size());
+}
+
+/// The constrained Delaunay triangulation of Z (every piece a constraint); handle[i] is the
+/// vertex of Z vertex i.
+inline void insert_z(const std::vector<madd_zvertex>& z, madd_cdt& cdt,
+                     std::vector<madd_cdt::Vertex_handle>& handle) {
+  std::vector<std::pair<epick::Point_2, std::uint32_t>> pts;
+  pts.reserve(z.size());
+  for (std::uint32_t i = 0; i < z.size(); ++i)
+    pts.emplace_back(epick::Point_2(z[i].p.x, z[i].p.y), i);
+  cdt.insert(pts.begin(), pts.end());
+  handle.assign(z.size(), madd_cdt::Vertex_handle());
   for (auto v : cdt.finite_vertex_handles())
     handle[v->info()] = v;
   for (std::uint32_t i = 0; i < z.size(); ++i)
     PDD_ASSERT(handle[i] != madd_cdt::Vertex_handle());
   for (std::uint32_t i = 0; i < z.size(); ++i)
     cdt.insert_constraint(handle[i], handle[z[i].next]);
+}
 
-  // --- condition (ii): bisect encroached pieces.
+/// Whether the piece (f, fi) has a vertex of the triangulation strictly inside its diametral
+/// circle: the apex of one of its two triangles (exact predicate).
+inline bool piece_encroached(const madd_cdt& cdt, madd_cdt::Face_handle f, int fi) {
+  const auto pu = f->vertex(madd_cdt::ccw(fi))->point(), pw = f->vertex(madd_cdt::cw(fi))->point();
+  for (int side = 0; side < 2; ++side) {
+    const auto g = side == 0 ? f : f->neighbor(fi);
+    const int gi = side == 0 ? fi : g->index(f);
+    const auto apex = g->vertex(gi);
+    if (cdt.is_infinite(apex)) continue;
+    if (CGAL::side_of_bounded_circle(pu, pw, apex->point()) == CGAL::ON_BOUNDED_SIDE) return true;
+  }
+  return false;
+}
+
+/// The midpoint vertex that bisects piece u -> w (Z vertices; canonical midpoint), not yet
+/// linked into Z.
+inline madd_zvertex piece_midpoint(const madd_region& r, const madd_triangulation& tr,
+                                   std::uint32_t u, std::uint32_t w) {
+  const auto& z = tr.z;
+  madd_zvertex m;
+  m.p = canonical_midpoint(z[u].p, z[w].p);
+  m.loop = z[u].loop;
+  m.edge = z[u].edge;
+  m.original = false;
+  m.depth = static_cast<std::uint8_t>(std::max(z[u].depth, z[w].depth) + 1);
+  m.t = 0.5 * (z_edge_param(r, tr, u, u) + z_edge_param(r, tr, u, w));
+  const madd_loop& lp = r.loops[m.loop];
+  m.marker = lp.tags[m.edge].external ? lp.tags[m.edge].marker : 0;
+  m.far_prev = lp.points[m.edge];
+  m.far_next = lp.points[(m.edge + 1) % lp.size()];
+  m.prev = u;
+  m.next = w;
+  return m;
+}
+
+/// The pieces of Z that are constrained edges around vertex vh, queued for a check.
+inline void queue_pieces_around(const madd_cdt& cdt, const std::vector<madd_zvertex>& z,
+                                madd_cdt::Vertex_handle vh, std::deque<std::uint32_t>& queue) {
+  auto fc = cdt.incident_faces(vh), done = fc;
+  do {
+    const int i = fc->index(vh);
+    if (fc->is_constrained(i)) {
+      const std::uint32_t x = fc->vertex(madd_cdt::ccw(i))->info();
+      const std::uint32_t y = fc->vertex(madd_cdt::cw(i))->info();
+      if (z[x].next == y)
+        queue.push_back(x);
+      else if (z[y].next == x)
+        queue.push_back(y);
+    }
+  } while (++fc != done);
+}
+
+/// Condition (ii) of 3.2: bisects encroached pieces until none is, or a piece has been
+/// bisected max_depth times (small input angles cascade), or cannot be (a few ulps long).
+inline void split_encroached_pieces(const madd_region& r, madd_triangulation& tr, madd_cdt& cdt,
+                                    std::vector<madd_cdt::Vertex_handle>& handle, int max_depth) {
+  auto& z = tr.z;
   std::deque<std::uint32_t> queue;
   for (std::uint32_t i = 0; i < z.size(); ++i)
     queue.push_back(i);
-  auto push_constrained_around = [&](madd_cdt::Vertex_handle vh) {
-    auto fc = cdt.incident_faces(vh), done = fc;
-    do {
-      const int i = fc->index(vh);
-      if (fc->is_constrained(i)) {
-        const std::uint32_t x = fc->vertex(madd_cdt::ccw(i))->info();
-        const std::uint32_t y = fc->vertex(madd_cdt::cw(i))->info();
-        if (z[x].next == y)
-          queue.push_back(x);
-        else if (z[y].next == x)
-          queue.push_back(y);
-      }
-    } while (++fc != done);
-  };
   while (!queue.empty()) {
     const std::uint32_t u = queue.front();
     queue.pop_front();
@@ -197,31 +237,10 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
     madd_cdt::Face_handle f;
     int fi = 0;
     if (!cdt.is_edge(handle[u], handle[w], f, fi)) continue; // already split
-    if (std::max(z[u].depth, z[w].depth) >= max_encroachment_depth) continue;
-    const auto pu = handle[u]->point(), pw = handle[w]->point();
-    bool encroached = false;
-    for (int side = 0; side < 2 && !encroached; ++side) {
-      const auto g = side == 0 ? f : f->neighbor(fi);
-      const int gi = side == 0 ? fi : g->index(f);
-      const auto apex = g->vertex(gi);
-      if (cdt.is_infinite(apex)) continue;
-      encroached = CGAL::side_of_bounded_circle(pu, pw, apex->point()) == CGAL::ON_BOUNDED_SIDE;
-    }
-    if (!encroached) continue;
-    madd_zvertex m;
-    m.p = canonical_midpoint(z[u].p, z[w].p);
+    if (std::max(z[u].depth, z[w].depth) >= max_depth) continue;
+    if (!piece_encroached(cdt, f, fi)) continue;
+    const madd_zvertex m = piece_midpoint(r, tr, u, w);
     if (m.p == z[u].p || m.p == z[w].p) continue; // a piece of a few ulps: cannot bisect
-    m.loop = z[u].loop;
-    m.edge = z[u].edge;
-    m.original = false;
-    m.depth = static_cast<std::uint8_t>(std::max(z[u].depth, z[w].depth) + 1);
-    m.t = 0.5 * (z_edge_param(r, tr, u, u) + z_edge_param(r, tr, u, w));
-    const madd_loop& lp = r.loops[m.loop];
-    m.marker = lp.tags[m.edge].external ? lp.tags[m.edge].marker : 0;
-    m.far_prev = lp.points[m.edge];
-    m.far_next = lp.points[(m.edge + 1) % lp.size()];
-    m.prev = u;
-    m.next = w;
     const auto k = static_cast<std::uint32_t>(z.size());
     z.push_back(m);
     z[u].next = k;
@@ -237,41 +256,16 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
     ++tr.encroachment_splits;
     queue.push_back(u);
     queue.push_back(k);
-    push_constrained_around(vh);
+    queue_pieces_around(cdt, z, vh, queue);
   }
+}
 
-  // --- faces inside the region: flood fill from the infinite face, crossing a constrained
-  // edge enters one level deeper; the region is at odd levels.
+/// The faces inside the region (odd nesting level, pdd::flood_levels) as tr.faces, with
+/// their neighbours across non-boundary edges.
+inline void collect_region_faces(madd_cdt& cdt, madd_triangulation& tr) {
   for (auto f : cdt.all_face_handles())
     f->info() = -1;
-  {
-    std::vector<madd_cdt::Face_handle> border{cdt.infinite_face()}, next_border;
-    int level = 0;
-    while (!border.empty()) {
-      next_border.clear();
-      for (auto start : border) {
-        if (start->info() != -1) continue;
-        std::vector<madd_cdt::Face_handle> stack{start};
-        start->info() = level;
-        while (!stack.empty()) {
-          auto f = stack.back();
-          stack.pop_back();
-          for (int i = 0; i < 3; ++i) {
-            auto n = f->neighbor(i);
-            if (n->info() != -1) continue;
-            if (f->is_constrained(i)) {
-              next_border.push_back(n);
-            } else {
-              n->info() = level;
-              stack.push_back(n);
-            }
-          }
-        }
-      }
-      std::swap(border, next_border);
-      ++level;
-    }
-  }
+  flood_levels(cdt, [](madd_cdt::Face_handle f) -> int& { return f->info(); });
   std::vector<madd_cdt::Face_handle> inside;
   for (auto f : cdt.finite_face_handles())
     if (f->info() % 2 == 1) inside.push_back(f);
@@ -285,16 +279,27 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
     madd_face& mf = tr.faces[i];
     for (int k = 0; k < 3; ++k) {
       mf.v[k] = f->vertex(k)->info();
-      if (f->is_constrained(k)) {
-        mf.nb[k] = -1;
-      } else {
-        mf.nb[k] = f->neighbor(k)->info();
-        PDD_ASSERT(mf.nb[k] >= 0);
-      }
+      mf.nb[k] = f->is_constrained(k) ? -1 : f->neighbor(k)->info();
+      PDD_ASSERT(f->is_constrained(k) || mf.nb[k] >= 0);
     }
     for (int k = 0; k < 3; ++k)
-      if (mf.nb[k] < 0) PDD_ASSERT(z[mf.v[(k + 1) % 3]].next == mf.v[(k + 2) % 3]);
+      if (mf.nb[k] < 0) PDD_ASSERT(tr.z[mf.v[(k + 1) % 3]].next == mf.v[(k + 2) % 3]);
   }
+}
+
+/// Builds Z for a region (target piece length h > 0) and its constrained Delaunay
+/// triangulation, bisecting encroached pieces at most max_encroachment_depth times each.
+/// \pre r is a valid region (simple loops, holes inside the outer loop, no shared vertices).
+/// Complexity O(n log n) expected, n = |Z|. Thread-safe (no shared state).
+inline madd_triangulation triangulate_region(const madd_region& r, double h,
+                                             int max_encroachment_depth) {
+  madd_triangulation tr;
+  build_z(r, h, tr.z);
+  madd_cdt cdt;
+  std::vector<madd_cdt::Vertex_handle> handle;
+  insert_z(tr.z, cdt, handle);
+  split_encroached_pieces(r, tr, cdt, handle, max_encroachment_depth);
+  collect_region_faces(cdt, tr);
   return tr;
 }
 
