@@ -4,6 +4,7 @@
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/sizing/uniform.hpp>
 
 #include <atomic>
 #include <cstdio>
