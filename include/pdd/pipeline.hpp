@@ -25,6 +25,7 @@
 #include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
+#include <pdd/pipeline/detail/memory_check.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/planning.hpp>
