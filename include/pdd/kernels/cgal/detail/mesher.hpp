@@ -8,6 +8,7 @@
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/detail/mesher_faces.hpp>
 
@@ -150,35 +151,11 @@ private:
 };
 
 /// Sets every face's nesting level (face info): the number of constrained edges crossed from
-/// the infinite face, one flood per level as in CGAL's mark_domain_in_triangulation.
+/// the infinite face (pdd::flood_levels, as CGAL's mark_domain_in_triangulation).
 inline void mark_nesting(cdt& tr) {
   for (auto f = tr.all_faces_begin(); f != tr.all_faces_end(); ++f)
     f->info() = -1;
-  std::vector<face_handle> stack;
-  std::vector<cdt::Edge> border;
-  const auto flood = [&](face_handle start, int level) {
-    start->info() = level;
-    stack.push_back(start);
-    while (!stack.empty()) {
-      const face_handle f = stack.back();
-      stack.pop_back();
-      for (int i = 0; i < 3; ++i) {
-        const face_handle n = f->neighbor(i);
-        if (n->info() != -1) continue;
-        if (f->is_constrained(i)) {
-          border.emplace_back(f, i);
-        } else {
-          n->info() = level;
-          stack.push_back(n);
-        }
-      }
-    }
-  };
-  flood(tr.infinite_face(), 0);
-  for (std::size_t k = 0; k < border.size(); ++k) {
-    const auto [f, i] = border[k];
-    if (f->neighbor(i)->info() == -1) flood(f->neighbor(i), f->info() + 1);
-  }
+  flood_levels(tr, [](face_handle f) -> int& { return f->info(); });
 }
 
 /// Marks the domain: faces enclosed by an odd number of constrained loops (odd nesting
