@@ -38,6 +38,8 @@
 
 namespace {
 
+using namespace pdd::drivers; // exit codes
+
 struct cli_options {
   std::string input, output, svg, stats;
   pdd::madd_options madd;
@@ -45,92 +47,113 @@ struct cli_options {
   double max_area = 0.0; ///< > 0: also plan the decoupling path for this area bound
 };
 
+/// Everything one pdd-decompose run produces.
+struct decompose_run {
+  pdd::pslg domain;
+  pdd::pslg_properties props;
+  pdd::decomposition d;
+  pdd::decomposition_statistics st;
+  std::optional<pdd::generate_statistics> path; ///< the decoupling path planned for --max-area
+  pdd::decomposition_report check;
+  double total_s = 0.0;
+};
+
+/// MADD alone, or with --max-area the pipeline's own MADD (the same decomposition, taken
+/// before decouple() shields it), shields and decoupling path.
+void decompose_domain(const cli_options& o, decompose_run& r) {
+  if (o.max_area <= 0.0) {
+    r.d = pdd::decompose(r.domain, o.madd, pdd::default_partitioner{}, &r.st);
+    return;
+  }
+  pdd::generate_options g;
+  g.criteria.max_area = o.max_area;
+  g.subdomains = o.madd.subdomains;
+  g.threads = o.madd.threads;
+  g.madd = o.madd;
+  g.check_memory = false;
+  pdd::pipeline<> pl(r.domain, g);
+  r.d = pl.decompose();
+  pl.decouple();
+  r.path = pl.statistics();
+  r.st = r.path->decomposition;
+}
+
+/// The --stats JSON.
+nlohmann::json stats_json(const cli_options& o, const decompose_run& r) {
+  std::vector<double> lengths = r.st.separator_length_per_subdomain;
+  std::sort(lengths.begin(), lengths.end());
+  nlohmann::json j;
+  j["input"] = o.input;
+  j["subdomains"] = r.st.subdomains;
+  j["algorithm"] = o.madd.algorithm;
+  j["min_separator_angle_deg"] = r.st.min_separator_angle_deg;
+  j["separator_length_total"] = r.st.separator_length_total;
+  j["separator_length_per_subdomain_median"] = lengths.empty() ? 0.0 : lengths[lengths.size() / 2];
+  j["max_area_over_mean"] = r.st.max_area_over_mean;
+  j["min_area_over_mean"] = r.st.min_area_over_mean;
+  j["area_domain"] = r.props.area;
+  j["area_sum"] = r.check.area_sum;
+  j["splits"] = r.st.splits;
+  j["repairs"] = r.st.repairs;
+  j["smoothing_moves"] = r.st.smoothing_moves;
+  j["valid"] = r.check.ok();
+  j["time_s"] = r.st.time_s;
+  j["total_s"] = r.total_s;
+  if (r.path) {
+    j["max_area"] = o.max_area;
+    j["estimated_triangles"] = r.path->estimated_triangles;
+    j["k"] = r.path->k;
+    j["lfs_min"] = r.path->lfs_min;
+    j["shortest_separator"] = r.path->shortest_separator;
+    j["split_points"] = r.path->split_points;
+    j["shielded_triangles"] = r.path->shielded_triangles;
+  }
+  j["peak_rss_mib"] = pdd::peak_rss_mib();
+  return j;
+}
+
+/// The summary lines on stdout (not with --quiet).
+void print_summary(const cli_options& o, const decompose_run& r) {
+  std::printf("pdd-decompose: %zu subdomains, min separator angle %.2f deg, max area / mean "
+              "%.3f, separator length %.6g, %.3f s\n",
+              r.st.subdomains, r.st.min_separator_angle_deg, r.st.max_area_over_mean,
+              r.st.separator_length_total, r.st.time_s);
+  if (r.path)
+    std::printf("pdd-decompose: decoupling path for max area %g: k %.6g, %zu split points "
+                "(about %.0f triangles planned), %zu shielded triangles\n",
+                o.max_area, r.path->k, r.path->split_points, r.path->estimated_triangles,
+                r.path->shielded_triangles);
+  for (const std::string* f : {&o.output, &o.svg, &o.stats})
+    if (!f->empty()) std::printf("pdd-decompose: wrote %s\n", f->c_str());
+}
+
 int run(cli_options o) {
   const auto t0 = std::chrono::steady_clock::now();
-  const pdd::pslg domain = pdd::read_poly(o.input);
-  const pdd::pslg_properties props = pdd::analyze(domain); // validates
+  decompose_run r;
+  r.domain = pdd::read_poly(o.input);
+  r.props = pdd::analyze(r.domain); // validates
   o.madd.smoothing = !o.no_smoothing;
   if (!o.quiet && pdd::stderr_is_terminal())
     std::fprintf(stderr, "\r\033[Kpdd-decompose: decomposing into %zu subdomains",
                  o.madd.subdomains);
-  pdd::decomposition_statistics st;
-  pdd::decomposition d;
-  std::optional<pdd::generate_statistics> path; // the decoupling path planned for --max-area
-  if (o.max_area > 0.0) {
-    // the pipeline's own MADD (the same decomposition), shields and decoupling path
-    pdd::generate_options g;
-    g.criteria.max_area = o.max_area;
-    g.subdomains = o.madd.subdomains;
-    g.threads = o.madd.threads;
-    g.madd = o.madd;
-    g.check_memory = false;
-    pdd::pipeline<> pl(domain, g);
-    d = pl.decompose(); // before decouple() shields it
-    pl.decouple();
-    path = pl.statistics();
-    st = path->decomposition;
-  } else {
-    d = pdd::decompose(domain, o.madd, pdd::default_partitioner{}, &st);
-  }
+  decompose_domain(o, r);
   if (!o.quiet && pdd::stderr_is_terminal()) std::fprintf(stderr, "\r\033[K");
-  const pdd::decomposition_report check =
-      pdd::validate_decomposition(d, domain, {.min_angle_deg = o.madd.min_separator_angle_deg});
-
-  if (!o.output.empty()) pdd::write_decomposition(o.output, d);
-  if (!o.svg.empty()) pdd::write_svg(o.svg, d);
-  const double total = pdd::seconds_since(t0);
+  r.check =
+      pdd::validate_decomposition(r.d, r.domain, {.min_angle_deg = o.madd.min_separator_angle_deg});
+  if (!o.output.empty()) pdd::write_decomposition(o.output, r.d);
+  if (!o.svg.empty()) pdd::write_svg(o.svg, r.d);
+  r.total_s = pdd::seconds_since(t0);
   if (!o.stats.empty()) {
-    std::vector<double> lengths = st.separator_length_per_subdomain;
-    std::sort(lengths.begin(), lengths.end());
-    nlohmann::json j;
-    j["input"] = o.input;
-    j["subdomains"] = st.subdomains;
-    j["algorithm"] = o.madd.algorithm;
-    j["min_separator_angle_deg"] = st.min_separator_angle_deg;
-    j["separator_length_total"] = st.separator_length_total;
-    j["separator_length_per_subdomain_median"] =
-        lengths.empty() ? 0.0 : lengths[lengths.size() / 2];
-    j["max_area_over_mean"] = st.max_area_over_mean;
-    j["min_area_over_mean"] = st.min_area_over_mean;
-    j["area_domain"] = props.area;
-    j["area_sum"] = check.area_sum;
-    j["splits"] = st.splits;
-    j["repairs"] = st.repairs;
-    j["smoothing_moves"] = st.smoothing_moves;
-    j["valid"] = check.ok();
-    j["time_s"] = st.time_s;
-    j["total_s"] = total;
-    if (path) {
-      j["max_area"] = o.max_area;
-      j["estimated_triangles"] = path->estimated_triangles;
-      j["k"] = path->k;
-      j["lfs_min"] = path->lfs_min;
-      j["shortest_separator"] = path->shortest_separator;
-      j["split_points"] = path->split_points;
-      j["shielded_triangles"] = path->shielded_triangles;
-    }
-    j["peak_rss_mib"] = pdd::peak_rss_mib();
+    const nlohmann::json j = stats_json(o, r);
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
   }
-  if (!o.quiet) {
-    std::printf("pdd-decompose: %zu subdomains, min separator angle %.2f deg, max area / mean "
-                "%.3f, separator length %.6g, %.3f s\n",
-                st.subdomains, st.min_separator_angle_deg, st.max_area_over_mean,
-                st.separator_length_total, st.time_s);
-    if (path)
-      std::printf("pdd-decompose: decoupling path for max area %g: k %.6g, %zu split points "
-                  "(about %.0f triangles planned), %zu shielded triangles\n",
-                  o.max_area, path->k, path->split_points, path->estimated_triangles,
-                  path->shielded_triangles);
-    for (const std::string* f : {&o.output, &o.svg, &o.stats})
-      if (!f->empty()) std::printf("pdd-decompose: wrote %s\n", f->c_str());
-  }
-  if (!check.ok()) {
+  if (!o.quiet) print_summary(o, r);
+  if (!r.check.ok()) {
     std::fprintf(stderr, "pdd-decompose: the decomposition failed its check:\n%s",
-                 check.summary().c_str());
-    return 3;
+                 r.check.summary().c_str());
+    return verification_failed;
   }
-  return 0;
+  return ok;
 }
 
 } // namespace
