@@ -10,6 +10,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/kernels/cgal/detail/cluster_rule.hpp>
 #include <pdd/kernels/cgal/detail/mesher_faces.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -98,14 +99,14 @@ struct domain_gabriel {
   }
 };
 
-/// CGAL's edge level with clusters, using domain_gabriel. After a segment split it restores
+/// CGAL's edge level with clusters, using domain_gabriel, with the cluster rule restricted to
+/// clusters that meet the domain (domain_cluster_edges_base). After a segment split it restores
 /// the domain marks of the new faces before the encroachment tests (CGAL restores them only
 /// afterwards, in its visitor, which is harmless for its two-sided test but not for ours), and
 /// records on the new vertex the input segment it lies on.
 template <class Tr>
-class domain_edges_base
-    : public CGAL::Mesh_2::Refine_edges_base_with_clusters<Tr, domain_gabriel<Tr>> {
-  using super = CGAL::Mesh_2::Refine_edges_base_with_clusters<Tr, domain_gabriel<Tr>>;
+class domain_edges_base : public domain_cluster_edges_base<Tr, domain_gabriel<Tr>> {
+  using super = domain_cluster_edges_base<Tr, domain_gabriel<Tr>>;
   using Vertex_handle = typename Tr::Vertex_handle;
   using Face_handle = typename Tr::Face_handle;
 

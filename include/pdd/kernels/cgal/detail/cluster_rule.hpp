@@ -1,0 +1,135 @@
+/// \file cluster_rule.hpp
+/// The edge level's cluster rule of pdd::cgal::mesher, restricted to small angles of the domain.
+///
+/// Root cause of the unshielded bad triangles of issue 11 (../shared/data/regressions/
+/// quality-*.poly): CGAL Mesh_2 groups the constrained edges around a vertex into a *cluster*
+/// wherever two consecutive ones make an angle below 60 deg (Shewchuk's treatment of small
+/// input angles), without looking at the domain. Once a cluster is reduced, a bad face whose
+/// circumcentre encroaches one of its segments is dropped for good, not refined, when its
+/// shortest edge is longer than the cluster's shortest (Refine_edges_base_with_clusters::
+/// test_point_conflict_from_superior_impl returns CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED). That
+/// exemption is meant for skinny faces inside a small angle of the domain. But an angle below
+/// 60 deg on the side of a vertex that is *not* in the domain (a sharp corner of a hole, a
+/// sharp notch in the outer loop: a reflex domain corner whose exterior angle is below 60 deg)
+/// makes a cluster too, and then in-domain faces near that corner, which nothing shields, were
+/// dropped with angles down to 8 deg. Every domain has such corners once small domain angles
+/// are shielded (dissertation 8.1 leaves D' with none below 60 deg on the domain side, so no
+/// cluster of D' may ever drop a face), and subdomain corners of the decoupled path are the same.
+///
+/// An exterior wedge needs no cluster: pdd's encroachment test (domain_gabriel) only counts
+/// vertices on a domain side of a segment, and a vertex on one segment of an exterior wedge lies
+/// on the outer side of the other, so the two segments can never encroach each other (the
+/// ping-pong that clusters exist to stop). The rule below is CGAL's, except that a face is
+/// dropped only when the cluster has a small angle whose faces are in the domain; otherwise
+/// the encroached segment is split and the face is reconsidered, as in Ruppert's algorithm.
+#pragma once
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Mesh_2/Clusters.h>
+#include <CGAL/Mesh_2/Refine_edges_with_clusters.h>
+#include <CGAL/Mesher_level.h>
+#include <CGAL/Meshes/Triangulation_mesher_level_traits_2.h>
+
+#include <algorithm>
+
+namespace pdd::detail::cgal_mesh {
+
+/// Whether the cluster of v (CGAL's: the constrained edges from v to c.vertices, consecutive
+/// ones counter-clockwise less than 60 deg apart) has a small angle that lies in the domain:
+/// a sector between two counter-clockwise consecutive constrained edges of v, both in the
+/// cluster, with CGAL's small-angle test true, whose faces are in the domain.
+/// Complexity O(degree of v).
+template <class Tr>
+bool cluster_meets_domain(const Tr& tr, const CGAL::Mesh_2::Clusters<Tr>& clusters,
+                          typename Tr::Vertex_handle v,
+                          const typename CGAL::Mesh_2::Clusters<Tr>::Cluster& c) {
+  // A face (v, a, b), counter-clockwise, follows the edge (v, a) and precedes (v, b).
+  auto fc = tr.incident_faces(v);
+  const auto first = fc;
+  while (!fc->is_constrained(Tr::cw(fc->index(v))))
+    if (++fc == first) return false; // no constrained edge at v
+  const auto start = fc;
+  do {
+    const auto x = fc->vertex(Tr::ccw(fc->index(v)));
+    bool in_domain = false;
+    bool closed = false;
+    typename Tr::Vertex_handle y;
+    do {
+      const int i = fc->index(v);
+      in_domain = in_domain || (!tr.is_infinite(fc) && fc->is_in_domain());
+      y = fc->vertex(Tr::cw(i));
+      closed = fc->is_constrained(Tr::ccw(i));
+      ++fc;
+    } while (!closed);
+    if (in_domain && c.vertices.count(x) != 0 && c.vertices.count(y) != 0 &&
+        clusters.is_small_angle(x->point(), v->point(), y->point()))
+      return true;
+  } while (fc != start);
+  return false;
+}
+
+/// CGAL's Refine_edges_base_with_clusters with its cluster rule restricted to clusters that
+/// meet the domain (see the file comment for why).
+/// \tparam Tr a CGAL constrained Delaunay triangulation with Delaunay_mesh_face_base_2 faces.
+/// \tparam Conform the encroachment test (Is_locally_conforming_Gabriel's interface).
+template <class Tr, class Conform>
+class domain_cluster_edges_base
+    : public CGAL::Mesh_2::Refine_edges_base_with_clusters<Tr, Conform> {
+  using super = CGAL::Mesh_2::Refine_edges_base_with_clusters<Tr, Conform>;
+  using clusters_type = CGAL::Mesh_2::Clusters<Tr>;
+  using Zone = typename CGAL::Triangulation_mesher_level_traits_2<Tr>::Zone;
+  using Face_handle = typename Tr::Face_handle;
+
+public:
+  domain_cluster_edges_base(Tr& t, clusters_type& c) : super(t, c), clusters_(c) {}
+
+  /// The segments on the boundary of the conflict zone of p (a bad face's circumcentre) that p
+  /// encroaches are queued for splitting, and the face is reconsidered afterwards; the face is
+  /// dropped instead (CGAL's rule, not imperative refinement) when such a segment belongs to
+  /// one reduced cluster that meets the domain and whose shortest edge is shorter than the
+  /// face's shortest edge. As in CGAL, the status of the last encroached segment is returned.
+  CGAL::Mesher_level_conflict_status
+  test_point_conflict_from_superior_impl(const typename Tr::Point& p, Zone& z) {
+    CGAL::Mesher_level_conflict_status status = CGAL::NO_CONFLICT;
+    const double shortest = shortest_squared_edge(z.parent_face);
+    for (const auto& e : z.boundary_edges) {
+      const Face_handle& fh = e.first;
+      const int i = e.second;
+      if (!fh->is_constrained(i) || this->is_locally_conform(this->tr, fh, i, p)) continue;
+      const auto v1 = fh->vertex(Tr::cw(i));
+      const auto v2 = fh->vertex(Tr::ccw(i));
+      status = drops_face(v1, v2, shortest) ? CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED
+                                            : CGAL::CONFLICT_BUT_ELEMENT_CAN_BE_RECONSIDERED;
+      if (status != CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED)
+        this->add_constrained_edge_to_be_conformed(v1, v2);
+    }
+    return status;
+  }
+
+private:
+  /// CGAL's condition for leaving a bad face whose circumcentre encroaches [v1, v2], plus
+  /// cluster_meets_domain.
+  bool drops_face(typename Tr::Vertex_handle v1, typename Tr::Vertex_handle v2,
+                  double shortest) const {
+    typename clusters_type::Cluster c1, c2;
+    typename clusters_type::const_iterator it;
+    const bool at1 = clusters_.get_cluster(v1, v2, c1, it);
+    const bool at2 = clusters_.get_cluster(v2, v1, c2, it);
+    if (at1 == at2 || this->imperatively) return false;
+    const auto& c = at1 ? c1 : c2;
+    return c.is_reduced() && c.rmin < shortest &&
+           cluster_meets_domain(this->tr, clusters_, at1 ? v1 : v2, c);
+  }
+
+  double shortest_squared_edge(const Face_handle& f) const {
+    const auto dist = this->tr.geom_traits().compute_squared_distance_2_object();
+    const auto& a = f->vertex(0)->point();
+    const auto& b = f->vertex(1)->point();
+    const auto& c = f->vertex(2)->point();
+    return std::min({dist(b, c), dist(c, a), dist(a, b)});
+  }
+
+  const clusters_type& clusters_;
+};
+
+} // namespace pdd::detail::cgal_mesh
