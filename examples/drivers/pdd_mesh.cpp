@@ -5,7 +5,9 @@
 //            [--subdomains N] [--threads T] [--output-per-subdomain DIR] [--verify]
 //            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg] [--quiet]
 //
-// Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error.
+// Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error (among them
+// a triangle outside the shielded corners that violates the angle or area bound: every mesh is
+// checked before it is written, and nothing is written then).
 #include "exit_code.hpp"
 
 #include <pdd/errors.hpp>
@@ -17,6 +19,7 @@
 #include <pdd/io/write_mesh.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
+#include <pdd/mesh/quality_check.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -142,7 +145,9 @@ void read_input(const cli_options& o, mesh_run& r) {
 void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
   if (!o.per_subdomain_dir.empty()) {
     pdd::vtu_directory_sink files(o.per_subdomain_dir);
-    pdd::statistics_sink measured(files, r.domain, r.sizing);
+    // each subdomain mesh is checked before its file is written (the .pvtu index comes last)
+    pdd::quality_check_sink checked(files, r.domain, r.options.criteria, r.sizing);
+    pdd::statistics_sink measured(checked, r.domain, r.sizing);
     progress_sink sink(measured, bar);
     r.gs = pdd::generate(r.domain, r.options, sink);
     r.st = measured.statistics();
@@ -164,6 +169,8 @@ void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
 /// keep their input angle: exempt from the quality check only).
 void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
   if (!r.mesh) return;
+  // Never a silent bad mesh: the O(n) quality check, before anything is written.
+  pdd::check_quality(*r.mesh, r.domain, r.options.criteria, r.sizing);
   bar.stage("statistics");
   r.st = pdd::compute_statistics(*r.mesh, r.sizing);
   r.sst = pdd::compute_shielding_statistics(*r.mesh, r.domain);

@@ -1,0 +1,123 @@
+/// \file quality_check.hpp
+/// pdd::check_quality and pdd::quality_check_sink: the always-on O(n) check of a finished mesh
+/// against the promise of the method (every triangle outside a shielded corner meets the angle
+/// bound and the area bound, dissertation Theorem 24 (1)), so that a bad mesh is an error and
+/// never written silently. pdd::verify remains the full (optional) check.
+#pragma once
+
+#include <pdd/concepts/mesh_sink.hpp>
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/mesh/criteria.hpp>
+#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/mesh/verify.hpp>
+#include <pdd/shielding/shield_statistics.hpp>
+#include <pdd/sizing/uniform.hpp>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd {
+
+namespace detail {
+
+/// "(x, y)" with every digit of the coordinates.
+inline std::string describe_point(const point& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
+  return buf;
+}
+
+/// What is wrong with triangle t (flags of detail::check_triangles), with its vertices.
+inline std::string describe_bad_triangle(const triangle_mesh& m, std::size_t t, std::uint8_t f,
+                                         const mesh_criteria& criteria, double area_bound) {
+  const auto& tri = m.triangles[t];
+  std::string s = "quality check failed: triangle " + std::to_string(t);
+  if (f & tri_malformed) return s + " has bad vertex indices";
+  const point& a = m.vertices[tri[0]];
+  const point& b = m.vertices[tri[1]];
+  const point& c = m.vertices[tri[2]];
+  const auto ang = triangle_angles_deg(a, b, c);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, ": smallest angle %.6g deg (bound %.6g), area %.6g (bound %.6g)",
+                std::min({ang[0], ang[1], ang[2]}), criteria.min_angle_deg, triangle_area(a, b, c),
+                area_bound);
+  s += " " + describe_point(a) + " " + describe_point(b) + " " + describe_point(c) + buf;
+  if (f & tri_orientation) s += "; not counter-clockwise";
+  if (f & tri_quality) s += "; below the angle bound and not a shielded triangle";
+  if (f & tri_area) s += "; above the area bound";
+  return s;
+}
+
+} // namespace detail
+
+/// Checks every triangle of m: vertex indices, counter-clockwise orientation, the area bound
+/// min(criteria.max_area, sizing at the centroid) and, unless it is a shielded triangle of
+/// `domain` (pdd::find_shielded_triangles), the angle bound criteria.min_angle_deg; with the
+/// tolerances of pdd::verify (1e-9 deg, relative 1e-12 of the area).
+/// \param subdomain the id to report; -1: the triangle's marker (the subdomain id in a merged
+///   mesh of pdd::generate), 0 without markers.
+/// \throws pdd::meshing_error(subdomain, ...) naming the first bad triangle: its index in m,
+///   its vertices' coordinates, its smallest angle and area. A bad triangle is an internal
+///   error (the kernel broke its guarantee), never a property of the input.
+/// Complexity O(T log s) for T triangles and s small input angles, parallel. Thread-safe.
+template <SizingField S = uniform_sizing>
+void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criteria& criteria,
+                   const S& sizing = {}, long long subdomain = -1) {
+  verify_options vo{.criteria = criteria};
+  vo.quality_exempt = find_shielded_triangles(m, domain);
+  const auto bound_at = [&](const point& p) { return static_cast<double>(sizing.area_at(p)); };
+  const std::vector<std::uint8_t> flags = detail::check_triangles(m, vo, bound_at);
+  const auto bad = std::find_if(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
+  if (bad == flags.end()) return;
+  const auto t = static_cast<std::size_t>(bad - flags.begin());
+  const long long id = subdomain >= 0                  ? subdomain
+                       : t < m.triangle_markers.size() ? m.triangle_markers[t]
+                                                       : 0;
+  double bound = criteria.max_area;
+  if (!(*bad & detail::tri_malformed)) {
+    const auto& tri = m.triangles[t];
+    bound = std::min(bound, bound_at(detail::triangle_centroid(
+                                m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]])));
+  }
+  throw meshing_error(id, detail::describe_bad_triangle(m, t, *bad, criteria, bound));
+}
+
+/// A MeshSink decorator that runs check_quality on every subdomain mesh before handing it to
+/// the inner sink: a bad subdomain mesh throws (pdd::meshing_error with its id) and never
+/// reaches the inner sink, and the inner sink's finish() (e.g. the .pvtu index of a
+/// vtu_directory_sink, written last) is never reached either.
+/// \tparam Inner a MeshSink. \tparam S a SizingField.
+/// Thread-safety: consume() may run concurrently (as the inner sink's); `inner`, `domain` and
+/// `sizing` must outlive the sink.
+template <MeshSink Inner, SizingField S = uniform_sizing>
+class quality_check_sink {
+public:
+  static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
+
+  quality_check_sink(Inner& inner, const pslg& domain, mesh_criteria criteria, S sizing = {})
+      : inner_(inner), domain_(domain), criteria_(criteria), sizing_(std::move(sizing)) {}
+
+  void start(index_t n) {
+    if constexpr (requires { inner_.start(n); }) inner_.start(n);
+  }
+  /// Checks the mesh (\throws as check_quality, with id), then hands it on.
+  void consume(index_t id, triangle_mesh&& mesh) {
+    check_quality(mesh, domain_, criteria_, sizing_, static_cast<long long>(id));
+    inner_.consume(id, std::move(mesh));
+  }
+  void finish() { inner_.finish(); }
+
+private:
+  Inner& inner_;
+  const pslg& domain_;
+  mesh_criteria criteria_;
+  S sizing_;
+};
+
+} // namespace pdd
