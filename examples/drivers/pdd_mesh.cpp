@@ -33,6 +33,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <limits>
 #include <mutex>
@@ -109,6 +110,16 @@ private:
   progress& bar_;
 };
 
+/// Removes the subdomain files a failed run has written (all its jobs have ended).
+void remove_pieces(const pdd::vtu_directory_sink& files) {
+  for (std::size_t i = 0; i < files.pieces().size(); ++i)
+    if (files.pieces()[i].delivered) {
+      std::error_code ec; // best effort: the run has failed already
+      std::filesystem::remove(files.directory() / files.piece_name(static_cast<pdd::index_t>(i)),
+                              ec);
+    }
+}
+
 /// Everything one pdd-mesh run produces, filled phase by phase.
 struct mesh_run {
   pdd::pslg domain;
@@ -149,7 +160,12 @@ void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
     pdd::quality_check_sink checked(files, r.domain, r.options.criteria, r.sizing);
     pdd::statistics_sink measured(checked, r.domain, r.sizing);
     progress_sink sink(measured, bar);
-    r.gs = pdd::generate(r.domain, r.options, sink);
+    try {
+      r.gs = pdd::generate(r.domain, r.options, sink);
+    } catch (const pdd::error&) {
+      remove_pieces(files); // no index was written: leave no pieces of a failed run either
+      throw;
+    }
     r.st = measured.statistics();
     r.sst = measured.shielding();
   } else if (o.subdomains == 1) {

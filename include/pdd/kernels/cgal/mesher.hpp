@@ -27,7 +27,9 @@ namespace pdd::cgal {
 /// Differences from CGAL's Delaunay_mesher_2: the domain is marked before refinement (odd
 /// nesting of segment loops, less hole regions, see concepts/delaunay_mesher.hpp), a segment
 /// counts as encroached only by vertices on a side of it that lies in the domain (as in
-/// Triangle), and the criteria are pdd::cgal::sizing_criteria.
+/// Triangle), a bad face is left unrefined by the cluster rule for small input angles only when
+/// the small angle lies in the domain (CGAL also did so at sharp corners of holes and notches,
+/// detail/cluster_rule.hpp), and the criteria are pdd::cgal::sizing_criteria.
 ///
 /// Output: the input vertices first, in input order, with their coordinates and markers copied
 /// bit for bit; then the Steiner vertices in the triangulation's insertion order (deterministic:
