@@ -7,10 +7,10 @@
 
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/criteria.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/uniform.hpp>
