@@ -21,6 +21,7 @@
 
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/kernel.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/triangulation.hpp>
 
@@ -28,6 +29,7 @@
 #include <array>
 #include <cstdint>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 namespace pdd::detail {
@@ -169,10 +171,9 @@ inline void contract(madd_graph& g) {
   g.nodes = n;
 }
 
-/// Builds cells, faces and the contraction of a region's triangulation (Algorithms 3.1-3.2 or
-/// 3.4-3.5). Complexity O(T) for T triangles. Thread-safe.
-inline madd_graph build_madd_graph(const madd_triangulation& tr, const madd_graph_options& o) {
-  madd_graph g;
+/// Classifies every triangle of `tr` (junction or not, Algorithm 3.4) and creates its cells:
+/// three sub-triangles around the circumcentre for a junction, the triangle itself otherwise.
+inline void build_cells(const madd_triangulation& tr, const madd_graph_options& o, madd_graph& g) {
   const auto nt = tr.faces.size();
   g.info.resize(nt);
   g.first_cell.resize(nt);
@@ -196,39 +197,48 @@ inline madd_graph build_madd_graph(const madd_triangulation& tr, const madd_grap
         madd_cell c;
         c.tri = t;
         c.sub = k;
-        c.area = 0.5 * std::abs((p[(k + 2) % 3].x - p[(k + 1) % 3].x) * (j.c.y - p[(k + 1) % 3].y) -
-                                (p[(k + 2) % 3].y - p[(k + 1) % 3].y) * (j.c.x - p[(k + 1) % 3].x));
+        c.area = triangle_area(p[(k + 1) % 3], p[(k + 2) % 3], j.c);
         g.cells.push_back(c);
       }
     } else {
       madd_cell c;
       c.tri = t;
-      c.area = 0.5 * std::abs((p[1].x - p[0].x) * (p[2].y - p[0].y) -
-                              (p[1].y - p[0].y) * (p[2].x - p[0].x));
+      c.area = triangle_area(p[0], p[1], p[2]);
       g.cells.push_back(c);
     }
   }
-  // cell of triangle t adjacent to its edge k, and the side index of that edge in the cell.
-  auto edge_cell = [&](std::uint32_t t, int k) -> std::pair<std::uint32_t, int> {
-    if (g.info[t].junction) return {g.first_cell[t] + static_cast<std::uint32_t>(k), 0};
-    return {g.first_cell[t], k};
-  };
-  auto add_face = [&](madd_cell_face f, std::uint32_t ca, int sa, std::uint32_t cb, int sb) {
-    const auto id = static_cast<std::int32_t>(g.faces.size());
-    f.a = ca;
-    f.b = cb;
-    g.cells[ca].side[sa] = id;
-    g.cells[cb].side[sb] = id;
-    g.faces.push_back(f);
-  };
-  auto weight_of = [&](const madd_cell_face& f) {
-    if (!o.smoothing) return f.length;
-    double f1 = conformity_factor(tr.z[f.z0]);
-    if (f.z1 != no_index) f1 = std::min(f1, conformity_factor(tr.z[f.z1]));
-    return f.length * angle_factor(f.min_angle, o.phi0) * f1;
-  };
-  // Delaunay edges (type a of 3.5).
-  for (std::uint32_t t = 0; t < nt; ++t) {
+}
+
+/// The cell of triangle t adjacent to its edge k, and the side index of that edge in the cell.
+inline std::pair<std::uint32_t, int> edge_cell(const madd_graph& g, std::uint32_t t, int k) {
+  if (g.info[t].junction) return {g.first_cell[t] + static_cast<std::uint32_t>(k), 0};
+  return {g.first_cell[t], k};
+}
+
+/// Appends face f between side sa of cell ca and side sb of cell cb.
+inline void add_face(madd_graph& g, madd_cell_face f, std::uint32_t ca, int sa, std::uint32_t cb,
+                     int sb) {
+  const auto id = static_cast<std::int32_t>(g.faces.size());
+  f.a = ca;
+  f.b = cb;
+  g.cells[ca].side[sa] = id;
+  g.cells[cb].side[sb] = id;
+  g.faces.push_back(f);
+}
+
+/// The weight of a face: its length, times the angle and conformity factors when smoothing.
+inline double face_weight(const madd_triangulation& tr, const madd_graph_options& o,
+                          const madd_cell_face& f) {
+  if (!o.smoothing) return f.length;
+  double f1 = conformity_factor(tr.z[f.z0]);
+  if (f.z1 != no_index) f1 = std::min(f1, conformity_factor(tr.z[f.z1]));
+  return f.length * angle_factor(f.min_angle, o.phi0) * f1;
+}
+
+/// Adds the faces on the Delaunay edges between triangles (type a of Algorithm 3.5).
+inline void add_delaunay_faces(const madd_triangulation& tr, const madd_graph_options& o,
+                               madd_graph& g) {
+  for (std::uint32_t t = 0; t < tr.faces.size(); ++t) {
     const madd_face& f = tr.faces[t];
     for (int k = 0; k < 3; ++k) {
       if (f.nb[k] < 0 || static_cast<std::uint32_t>(f.nb[k]) < t) continue;
@@ -246,36 +256,47 @@ inline madd_graph build_madd_graph(const madd_triangulation& tr, const madd_grap
       cf.min_angle = std::min(boundary_angle(a.p, b.p, a.far_prev, a.far_next),
                               boundary_angle(b.p, a.p, b.far_prev, b.far_next));
       cf.cuttable = o.algorithm == 2 && cf.min_angle >= o.phi0_accept;
-      cf.weight = weight_of(cf);
-      const auto [ca, sa] = edge_cell(t, k);
-      const auto [cb, sb] = edge_cell(u, ku);
-      add_face(cf, ca, sa, cb, sb);
+      cf.weight = face_weight(tr, o, cf);
+      const auto [ca, sa] = edge_cell(g, t, k);
+      const auto [cb, sb] = edge_cell(g, u, ku);
+      add_face(g, cf, ca, sa, cb, sb);
     }
   }
-  // Circumcentre segments (type b) inside junction triangles.
-  for (std::uint32_t t = 0; t < nt; ++t) {
+}
+
+/// Which of the three circumcentre segments of junction j may be cut: the best pair's two
+/// (Algorithm 3.2), or those with large end angles that do not meet at a small angle (3.5).
+inline std::array<bool, 3> cuttable_segments(const junction_info& j, const madd_graph_options& o) {
+  std::array<bool, 3> cut{};
+  if (o.algorithm == 1) {
+    cut[(j.best_pair + 1) % 3] = cut[(j.best_pair + 2) % 3] = true;
+    return cut;
+  }
+  for (int k = 0; k < 3; ++k)
+    cut[k] = j.end_angle[k] >= o.phi0_accept;
+  for (int k = 0; k < 3; ++k) {
+    const int a = (k + 1) % 3, b = (k + 2) % 3;
+    if (!cut[a] || !cut[b] || j.central[k] >= o.phi0_accept) continue;
+    // Pair k would meet at c at a small angle: contracting segment a leaves pair a
+    // (segments b and k), contracting b leaves pair b (segments k and a).
+    const double keep_a = j.pair_ok[a] ? j.pair_score[a] : -1.0;
+    const double keep_b = j.pair_ok[b] ? j.pair_score[b] : -1.0;
+    if (keep_a >= keep_b)
+      cut[a] = false;
+    else
+      cut[b] = false;
+  }
+  return cut;
+}
+
+/// Adds the circumcentre segments (type b of Algorithm 3.5) inside junction triangles.
+inline void add_circumcentre_faces(const madd_triangulation& tr, const madd_graph_options& o,
+                                   madd_graph& g) {
+  for (std::uint32_t t = 0; t < tr.faces.size(); ++t) {
     const junction_info& j = g.info[t];
     if (!j.junction) continue;
     const madd_face& f = tr.faces[t];
-    std::array<bool, 3> cut{};
-    if (o.algorithm == 1) {
-      cut[(j.best_pair + 1) % 3] = cut[(j.best_pair + 2) % 3] = true;
-    } else {
-      for (int k = 0; k < 3; ++k)
-        cut[k] = j.end_angle[k] >= o.phi0_accept;
-      for (int k = 0; k < 3; ++k) {
-        const int a = (k + 1) % 3, b = (k + 2) % 3;
-        if (!cut[a] || !cut[b] || j.central[k] >= o.phi0_accept) continue;
-        // Pair k would meet at c at a small angle: contracting segment a leaves pair a
-        // (segments b and k), contracting b leaves pair b (segments k and a).
-        const double keep_a = j.pair_ok[a] ? j.pair_score[a] : -1.0;
-        const double keep_b = j.pair_ok[b] ? j.pair_score[b] : -1.0;
-        if (keep_a >= keep_b)
-          cut[a] = false;
-        else
-          cut[b] = false;
-      }
-    }
+    const std::array<bool, 3> cut = cuttable_segments(j, o);
     const std::uint32_t base = g.first_cell[t];
     for (int k = 0; k < 3; ++k) {
       // Segment c a_k separates sub-triangles k+1 (side 1: a_k -> c, as a_k = v[(k+1)+2])
@@ -286,11 +307,20 @@ inline madd_graph build_madd_graph(const madd_triangulation& tr, const madd_grap
       cf.length = distance(j.c, tr.z[f.v[k]].p);
       cf.min_angle = j.end_angle[k];
       cf.cuttable = cut[k];
-      cf.weight = weight_of(cf);
-      add_face(cf, base + static_cast<std::uint32_t>((k + 1) % 3), 1,
+      cf.weight = face_weight(tr, o, cf);
+      add_face(g, cf, base + static_cast<std::uint32_t>((k + 1) % 3), 1,
                base + static_cast<std::uint32_t>((k + 2) % 3), 2);
     }
   }
+}
+
+/// Builds cells, faces and the contraction of a region's triangulation (Algorithms 3.1-3.2 or
+/// 3.4-3.5). Complexity O(T) for T triangles. Thread-safe.
+inline madd_graph build_madd_graph(const madd_triangulation& tr, const madd_graph_options& o) {
+  madd_graph g;
+  build_cells(tr, o, g);
+  add_delaunay_faces(tr, o, g);
+  add_circumcentre_faces(tr, o, g);
   contract(g);
   return g;
 }
