@@ -3,9 +3,9 @@
 /// a strict parser of Triangle's .poly and .node sections.
 #pragma once
 
-#include <pdd/errors.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
 
 #include <charconv>
 #include <climits>
@@ -277,35 +277,39 @@ inline vertex_section parse_node_text(std::string_view text, const std::string& 
   return p.vertex_records(h);
 }
 
-/// Parses a .poly file held in memory; see pdd::parse_poly.
-inline pslg parse_poly_text(std::string_view text, const std::string& file,
-                            const std::filesystem::path& node_dir) {
-  triangle_file_parser p(text, file);
-  pslg g;
-
-  // Vertices, or the sibling .node file when the count is 0.
+/// Reads the vertex section of a .poly file, or the sibling .node file when its count is 0
+/// (looked up in `node_dir`, or beside `file` when `node_dir` is empty).
+inline vertex_section read_poly_vertices(triangle_file_parser& p, const std::string& file,
+                                         const std::filesystem::path& node_dir) {
   const vertex_header h = p.vertex_section_header();
   const std::size_t header_line = p.line();
-  vertex_section vs;
-  if (h.count > 0) {
-    vs = p.vertex_records(h);
-  } else {
-    const std::filesystem::path name = std::filesystem::path(file).filename();
-    const std::filesystem::path dir =
-        node_dir.empty() ? std::filesystem::path(file).parent_path() : node_dir;
-    const std::filesystem::path node = dir / name.stem().concat(".node");
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(node, ec))
-      p.fail_at(header_line, "expected the vertices in '" + node.string() +
-                                 "' (the vertex count is 0), but that file cannot be found");
-    vs = parse_node_text(slurp_file(node), node.string());
-  }
-  g.vertices = std::move(vs.vertices);
-  g.vertex_markers = std::move(vs.markers);
-  const long long lo = vs.first_id;
-  const long long hi = lo + static_cast<long long>(g.vertices.size()) - 1;
+  if (h.count > 0) return p.vertex_records(h);
+  const std::filesystem::path name = std::filesystem::path(file).filename();
+  const std::filesystem::path dir =
+      node_dir.empty() ? std::filesystem::path(file).parent_path() : node_dir;
+  const std::filesystem::path node = dir / name.stem().concat(".node");
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(node, ec))
+    p.fail_at(header_line, "expected the vertices in '" + node.string() +
+                               "' (the vertex count is 0), but that file cannot be found");
+  return parse_node_text(slurp_file(node), node.string());
+}
 
-  // Segments.
+/// Field `field` of the current segment record as a 0-based vertex index, given the file's
+/// vertex ids [lo, hi].
+inline index_t segment_endpoint(triangle_file_parser& p, std::size_t field, long long lo,
+                                long long hi) {
+  const long long v = p.integer(field, "a segment endpoint (vertex id)");
+  if (v < 0)
+    p.fail("expected a vertex id as segment endpoint, found negative index " + std::to_string(v));
+  if (v < lo || v > hi)
+    p.fail("expected a segment endpoint in the vertex id range [" + std::to_string(lo) + ", " +
+           std::to_string(hi) + "], found " + std::to_string(v) + " (out of range)");
+  return static_cast<index_t>(v - lo);
+}
+
+/// Reads the segment section of a .poly file into g.segments; vertex ids are [lo, hi].
+inline void read_poly_segments(triangle_file_parser& p, long long lo, long long hi, pslg& g) {
   const auto seg_header = [] { return "the segment header '<#segments> <#boundary markers>'"; };
   p.next(seg_header);
   p.expect_fields(2, 2, seg_header);
@@ -325,22 +329,15 @@ inline pslg parse_poly_text(std::string_view text, const std::string& file,
     p.next(rec);
     p.expect_fields(snf, snf, rec);
     if (p.integer(0, "the segment id") < 0) p.fail("expected a non-negative segment id");
-    index_t ends[2];
-    for (std::size_t k = 0; k < 2; ++k) {
-      const long long v = p.integer(1 + k, "a segment endpoint (vertex id)");
-      if (v < 0)
-        p.fail("expected a vertex id as segment endpoint, found negative index " +
-               std::to_string(v));
-      if (v < lo || v > hi)
-        p.fail("expected a segment endpoint in the vertex id range [" + std::to_string(lo) + ", " +
-               std::to_string(hi) + "], found " + std::to_string(v) + " (out of range)");
-      ends[k] = static_cast<index_t>(v - lo);
-    }
+    const index_t a = segment_endpoint(p, 1, lo, hi);
+    const index_t b = segment_endpoint(p, 2, lo, hi);
     const int m = sm ? p.marker(3, "the segment boundary marker") : 0;
-    g.segments.push_back({ends[0], ends[1], m});
+    g.segments.push_back({a, b, m});
   }
+}
 
-  // Holes (required).
+/// Reads the (required) hole section of a .poly file into g.holes.
+inline void read_poly_holes(triangle_file_parser& p, pslg& g) {
   const auto hole_header = [] { return "the hole header '<#holes>'"; };
   p.next(hole_header);
   p.expect_fields(1, 1, hole_header);
@@ -356,9 +353,12 @@ inline pslg parse_poly_text(std::string_view text, const std::string& file,
     if (p.integer(0, "the hole id") < 0) p.fail("expected a non-negative hole id");
     g.holes.push_back({p.real(1, "the hole x coordinate"), p.real(2, "the hole y coordinate")});
   }
+}
 
-  // Regional attributes and area constraints (optional section).
-  if (!p.try_next()) return g;
+/// Reads the optional regional attribute section of a .poly file into g.regions, then
+/// requires the end of the file.
+inline void read_poly_regions(triangle_file_parser& p, pslg& g) {
+  if (!p.try_next()) return;
   p.expect_fields(1, 1, [] { return "the regional attribute header '<#regions>'"; });
   const std::size_t nr = p.count(0, "the number of regions");
   p.check_fits(nr, "the number of regions");
@@ -378,6 +378,21 @@ inline pslg parse_poly_text(std::string_view text, const std::string& file,
     g.regions.push_back(r);
   }
   if (p.try_next()) p.fail("expected the end of the file after the regional attributes");
+}
+
+/// Parses a .poly file held in memory; see pdd::parse_poly.
+inline pslg parse_poly_text(std::string_view text, const std::string& file,
+                            const std::filesystem::path& node_dir) {
+  triangle_file_parser p(text, file);
+  pslg g;
+  vertex_section vs = read_poly_vertices(p, file, node_dir);
+  g.vertices = std::move(vs.vertices);
+  g.vertex_markers = std::move(vs.markers);
+  const long long lo = vs.first_id;
+  const long long hi = lo + static_cast<long long>(g.vertices.size()) - 1;
+  read_poly_segments(p, lo, hi, g);
+  read_poly_holes(p, g);
+  read_poly_regions(p, g);
   return g;
 }
 
