@@ -145,78 +145,95 @@ inline void write_decomposition(const std::filesystem::path& path, const decompo
   });
 }
 
-/// Reads a decomposition written by write_decomposition.
-/// \throws pdd::input_error "file:line: what was expected" for any malformed content (counts,
-/// ids out of range, truncation), never a partial result.
-inline decomposition read_decomposition(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  if (!in) throw input_error(path.string(), 0, "cannot open the file");
-  detail::decomposition_reader r(in, path.string());
-  constexpr index_t max_count = 1u << 30;
-  decomposition d;
+namespace detail {
+
+/// Largest count read_decomposition accepts for any section.
+inline constexpr index_t max_decomposition_count = 1u << 30;
+
+/// Reads the header line and the vertex section into d.
+inline void read_decomposition_vertices(decomposition_reader& r, decomposition& d) {
   r.next("'pdd-decomposition 1'");
   r.expect_keyword(0, "pdd-decomposition");
   r.expect_count(2, "pdd-decomposition VERSION");
   if (r.token(1) != "1") r.fail("unsupported version '" + r.token(1) + "', expected 1");
-
   r.next("'vertices <n>'");
   r.expect_keyword(0, "vertices");
   r.expect_count(2, "vertices <n>");
-  const index_t nv = r.integer<index_t>(1, max_count);
+  const index_t nv = r.integer<index_t>(1, max_decomposition_count);
   for (index_t i = 0; i < nv; ++i) {
     r.next("a vertex line '<x> <y> <marker>'");
     r.expect_count(3, "<x> <y> <marker>");
     d.vertices.push_back({r.real(0), r.real(1)});
     d.vertex_markers.push_back(r.marker(2));
   }
+}
+
+/// Reads one edge line of a loop: appends its vertex (< nv) and its tag (neighbours < ns).
+inline void read_decomposition_edge(decomposition_reader& r, index_t nv, index_t ns,
+                                    std::vector<index_t>& loop, std::vector<edge_tag>& tags) {
+  r.next("an edge line '<vertex> e|i <id> <marker|neighbour>'");
+  r.expect_count(4, "<vertex> e|i <id> <marker|neighbour>");
+  loop.push_back(r.integer<index_t>(0, nv - 1));
+  edge_tag t;
+  if (r.token(1) == "e") {
+    t.type = edge_tag::kind::external;
+    t.id = r.integer<index_t>(2, max_decomposition_count);
+    t.marker = r.marker(3);
+  } else if (r.token(1) == "i") {
+    t.type = edge_tag::kind::interface;
+    t.id = r.integer<index_t>(2, max_decomposition_count);
+    t.neighbour = r.integer<index_t>(3, ns - 1);
+  } else {
+    r.fail("expected 'e' (external) or 'i' (interface), found '" + r.token(1) + "'");
+  }
+  tags.push_back(t);
+}
+
+/// Reads one subdomain (its header line and its loops); nv vertices, ns subdomains.
+inline subdomain read_decomposition_subdomain(decomposition_reader& r, index_t nv, index_t ns) {
+  r.next("'subdomain <area> <loops>'");
+  r.expect_keyword(0, "subdomain");
+  r.expect_count(3, "subdomain <area> <loops>");
+  subdomain sd;
+  sd.area = r.real(1);
+  const index_t nl = r.integer<index_t>(2, max_decomposition_count);
+  if (nl == 0) r.fail("a subdomain needs at least one loop");
+  for (index_t l = 0; l < nl; ++l) {
+    r.next("'loop <edges>'");
+    r.expect_keyword(0, "loop");
+    r.expect_count(2, "loop <edges>");
+    const index_t ne = r.integer<index_t>(1, max_decomposition_count);
+    if (ne < 3) r.fail("a loop needs at least 3 edges");
+    std::vector<index_t> loop;
+    std::vector<edge_tag> tags;
+    for (index_t e = 0; e < ne; ++e)
+      read_decomposition_edge(r, nv, ns, loop, tags);
+    sd.loops.push_back(std::move(loop));
+    sd.tags.push_back(std::move(tags));
+  }
+  return sd;
+}
+
+/// Reads the subdomain section into d.subdomains (after the vertices).
+inline void read_decomposition_subdomains(decomposition_reader& r, decomposition& d) {
+  const auto nv = static_cast<index_t>(d.vertices.size());
   r.next("'subdomains <m>'");
   r.expect_keyword(0, "subdomains");
   r.expect_count(2, "subdomains <m>");
-  const index_t ns = r.integer<index_t>(1, max_count);
+  const index_t ns = r.integer<index_t>(1, max_decomposition_count);
   if (ns > 0 && nv < 3) r.fail("subdomains need at least 3 vertices");
-  for (index_t s = 0; s < ns; ++s) {
-    r.next("'subdomain <area> <loops>'");
-    r.expect_keyword(0, "subdomain");
-    r.expect_count(3, "subdomain <area> <loops>");
-    subdomain sd;
-    sd.area = r.real(1);
-    const index_t nl = r.integer<index_t>(2, max_count);
-    if (nl == 0) r.fail("a subdomain needs at least one loop");
-    for (index_t l = 0; l < nl; ++l) {
-      r.next("'loop <edges>'");
-      r.expect_keyword(0, "loop");
-      r.expect_count(2, "loop <edges>");
-      const index_t ne = r.integer<index_t>(1, max_count);
-      if (ne < 3) r.fail("a loop needs at least 3 edges");
-      std::vector<index_t> loop;
-      std::vector<edge_tag> tags;
-      for (index_t e = 0; e < ne; ++e) {
-        r.next("an edge line '<vertex> e|i <id> <marker|neighbour>'");
-        r.expect_count(4, "<vertex> e|i <id> <marker|neighbour>");
-        loop.push_back(r.integer<index_t>(0, nv - 1));
-        edge_tag t;
-        if (r.token(1) == "e") {
-          t.type = edge_tag::kind::external;
-          t.id = r.integer<index_t>(2, max_count);
-          t.marker = r.marker(3);
-        } else if (r.token(1) == "i") {
-          t.type = edge_tag::kind::interface;
-          t.id = r.integer<index_t>(2, max_count);
-          t.neighbour = r.integer<index_t>(3, ns - 1);
-        } else {
-          r.fail("expected 'e' (external) or 'i' (interface), found '" + r.token(1) + "'");
-        }
-        tags.push_back(t);
-      }
-      sd.loops.push_back(std::move(loop));
-      sd.tags.push_back(std::move(tags));
-    }
-    d.subdomains.push_back(std::move(sd));
-  }
+  for (index_t s = 0; s < ns; ++s)
+    d.subdomains.push_back(read_decomposition_subdomain(r, nv, ns));
+}
+
+/// Reads the interface section into d.interfaces (after the subdomains).
+inline void read_decomposition_interfaces(decomposition_reader& r, decomposition& d) {
+  const auto nv = static_cast<index_t>(d.vertices.size());
+  const auto ns = static_cast<index_t>(d.subdomains.size());
   r.next("'interfaces <k>'");
   r.expect_keyword(0, "interfaces");
   r.expect_count(2, "interfaces <k>");
-  const index_t ni = r.integer<index_t>(1, max_count);
+  const index_t ni = r.integer<index_t>(1, max_decomposition_count);
   for (index_t i = 0; i < ni; ++i) {
     r.next("an interface line '<a> <b> <n> <v0> ...'");
     if (r.size() < 5) r.fail("expected '<a> <b> <n> <v0> <v1> ...' with n >= 2");
@@ -224,12 +241,28 @@ inline decomposition read_decomposition(const std::filesystem::path& path) {
     if (ns == 0) r.fail("an interface needs subdomains");
     c.a = r.integer<index_t>(0, ns - 1);
     c.b = r.integer<index_t>(1, ns - 1);
-    const index_t n = r.integer<index_t>(2, max_count);
+    const index_t n = r.integer<index_t>(2, max_decomposition_count);
     r.expect_count(3 + n, "<a> <b> <n> followed by n vertex ids");
     for (index_t k = 0; k < n; ++k)
       c.vertices.push_back(r.integer<index_t>(3 + k, nv - 1));
     d.interfaces.push_back(std::move(c));
   }
+}
+
+} // namespace detail
+
+/// Reads a decomposition written by write_decomposition.
+/// \throws pdd::input_error "file:line: what was expected" for any malformed content (counts,
+/// ids out of range, truncation), never a partial result.
+inline decomposition read_decomposition(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw input_error(path.string(), 0, "cannot open the file");
+  detail::decomposition_reader r(in, path.string());
+  decomposition d;
+  detail::read_decomposition_vertices(r, d);
+  detail::read_decomposition_subdomains(r, d);
+  detail::read_decomposition_interfaces(r, d);
+  const std::size_t ni = d.interfaces.size();
   for (const subdomain& sd : d.subdomains)
     for (const auto& tags : sd.tags)
       for (const edge_tag& t : tags)
