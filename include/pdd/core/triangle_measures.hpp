@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 
 namespace pdd::detail {
@@ -20,6 +21,20 @@ inline double twice_signed_area(const point& a, const point& b, const point& c) 
 /// Area of the triangle (a, b, c) (absolute value).
 inline double triangle_area(const point& a, const point& b, const point& c) noexcept {
   return 0.5 * std::abs(twice_signed_area(a, b, c));
+}
+
+/// Signed area of the polygon at(0), ..., at(n - 1) (> 0: counter-clockwise; rounded): the
+/// shoelace sum as a fan of twice_signed_area(at(0), at(i), at(i + 1)), i = 1 .. n - 2, in that
+/// order. Taking differences to the first vertex loses less to cancellation than the
+/// cross-product form sum x_i y_{i+1} - x_{i+1} y_i far from the origin.
+template <class PointAt>
+double polygon_signed_area(std::size_t n, PointAt&& at) {
+  if (n < 3) return 0.0;
+  const point o = at(std::size_t{0});
+  double twice = 0.0;
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    twice += twice_signed_area(o, at(i), at(i + 1));
+  return 0.5 * twice;
 }
 
 /// Centroid of the triangle (a, b, c); the point where sizing fields are sampled.

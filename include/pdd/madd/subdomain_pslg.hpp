@@ -4,10 +4,12 @@
 #pragma once
 
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <unordered_map>
 #include <vector>
@@ -74,14 +76,10 @@ void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterfac
   }
 }
 
-/// Signed area of one loop of pool vertices (shoelace; positive when counter-clockwise).
+/// Signed area of one loop of pool vertices (shoelace, pdd::detail::polygon_signed_area;
+/// positive when counter-clockwise).
 inline double loop_signed_area(const decomposition& d, const std::vector<index_t>& loop) {
-  double twice = 0.0;
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const point p = d.vertices[loop[i]], q = d.vertices[loop[(i + 1) % loop.size()]];
-    twice += p.x * q.y - q.x * p.y;
-  }
-  return 0.5 * twice;
+  return polygon_signed_area(loop.size(), [&](std::size_t i) { return d.vertices[loop[i]]; });
 }
 
 /// Area of subdomain s: its stored area when positive, else outer loop minus holes.

@@ -5,6 +5,7 @@
 
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
@@ -128,15 +129,10 @@ inline index_t other_end(const pslg& g, index_t s, index_t v) {
   return g.segments[s].a == v ? g.segments[s].b : g.segments[s].a;
 }
 
-/// Shoelace area of a vertex cycle, relative to its first vertex (less cancellation).
+/// Shoelace area of a vertex cycle (pdd::detail::polygon_signed_area: relative to its first
+/// vertex, less cancellation).
 inline double shoelace_area(const pslg& g, const std::vector<index_t>& cycle) {
-  const point o = g.vertices[cycle.front()];
-  double twice = 0.0;
-  for (std::size_t i = 1; i + 1 < cycle.size(); ++i) {
-    const point p = g.vertices[cycle[i]], q = g.vertices[cycle[i + 1]];
-    twice += (p.x - o.x) * (q.y - o.y) - (p.y - o.y) * (q.x - o.x);
-  }
-  return 0.5 * twice;
+  return polygon_signed_area(cycle.size(), [&](std::size_t i) { return g.vertices[cycle[i]]; });
 }
 
 /// Exact orientation of a simple cycle: the turn at its lexicographically smallest vertex.
