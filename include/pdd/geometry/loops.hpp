@@ -5,12 +5,12 @@
 #pragma once
 
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/detail/loops.hpp>
 
 #include <cmath>
 #include <cstddef>
-#include <deque>
 #include <string>
 #include <utility>
 #include <vector>
@@ -80,49 +80,49 @@ inline std::vector<polygon_loop> trace_loops(const pslg& g, const segment_incide
   return loops;
 }
 
-/// Floods one nesting component from `start` (level `level`, innermost loop `owner`) across
-/// unconstrained edges; constrained edges met lead into loops, queued in `border`.
-inline void flood_component(const pslg& g, const segment_incidence& inc, loop_triangulation& t,
-                            std::vector<polygon_loop>& loops, pslg_cdt::Face_handle start,
-                            int level, index_t owner,
-                            std::deque<std::pair<pslg_cdt::Face_handle, index_t>>& border) {
-  if (start->info().level != -1) return;
-  start->info().level = level;
-  start->info().owner = owner;
-  std::vector<pslg_cdt::Face_handle> stack{start};
-  while (!stack.empty()) {
-    const auto f = stack.back();
-    stack.pop_back();
-    for (int i = 0; i < 3; ++i) {
-      const auto n = f->neighbor(i);
-      if (n->info().level != -1) continue;
-      if (f->is_constrained(i)) {
-        const index_t u = f->vertex(pslg_cdt::cw(i))->info();
-        const index_t w = f->vertex(pslg_cdt::ccw(i))->info();
-        const index_t s = segment_between(g, inc, u, w);
-        if (s == no_index)
-          throw geometry_error("a vertex lies in the interior of a segment, at vertex " +
-                                   std::to_string(u) + " or " + std::to_string(w) +
-                                   "; pdd::validate names it",
-                               {u, w});
-        const index_t l = t.loop_of_segment[s];
-        if (loops[l].depth < 0) {
-          loops[l].depth = level;
-          loops[l].parent = owner;
-        }
-        PDD_ASSERT(loops[l].depth == level);
-        border.emplace_back(n, l);
-      } else {
-        n->info().level = level;
-        n->info().owner = owner;
-        stack.push_back(n);
-      }
-    }
-  }
+/// The loop whose segment is the constrained edge i of face f.
+/// \throws geometry_error when the edge is only part of a segment (a vertex lies in the
+/// segment's interior).
+inline index_t loop_across(const pslg& g, const segment_incidence& inc, const loop_triangulation& t,
+                           pslg_cdt::Face_handle f, int i) {
+  const index_t u = f->vertex(pslg_cdt::cw(i))->info();
+  const index_t w = f->vertex(pslg_cdt::ccw(i))->info();
+  const index_t s = segment_between(g, inc, u, w);
+  if (s == no_index)
+    throw geometry_error("a vertex lies in the interior of a segment, at vertex " +
+                             std::to_string(u) + " or " + std::to_string(w) +
+                             "; pdd::validate names it",
+                         {u, w});
+  return t.loop_of_segment[s];
 }
 
-/// Sets depth and parent of every loop by flood-filling the CDT level by level from the
-/// infinite face (the border queue is FIFO, so levels are visited in increasing order).
+/// The pdd::flood_levels visitor of flood_nesting: records each loop's depth and parent when
+/// the flood first meets one of its segments, and each face's owner (innermost enclosing loop).
+struct nesting_visitor {
+  using face = pslg_cdt::Face_handle;
+  const pslg& graph;
+  const segment_incidence& incidence;
+  const loop_triangulation& triangulation;
+  std::vector<polygon_loop>& loops;
+
+  void constraint(face f, int i) const {
+    polygon_loop& l = loops[loop_across(graph, incidence, triangulation, f, i)];
+    if (l.depth < 0) {
+      l.depth = f->info().level;
+      l.parent = f->info().owner;
+    }
+    PDD_ASSERT(l.depth == f->info().level);
+  }
+  void labelled(face n, face f, int i) const {
+    if (f == face()) return; // the infinite face: owner no_index
+    n->info().owner =
+        f->is_constrained(i) ? loop_across(graph, incidence, triangulation, f, i) : f->info().owner;
+  }
+};
+
+/// Sets depth and parent of every loop, and level and owner (innermost enclosing loop) of
+/// every face, by pdd::flood_levels from the infinite face: crossing a segment of loop l from
+/// a face at level d enters the inside of l, so depth(l) = d and parent(l) = that face's owner.
 inline void flood_nesting(const pslg& g, const segment_incidence& inc, loop_triangulation& t,
                           std::vector<polygon_loop>& loops) {
   if (loops.empty()) return;
@@ -131,13 +131,9 @@ inline void flood_nesting(const pslg& g, const segment_incidence& inc, loop_tria
                          "names them");
   for (auto& l : loops)
     l.depth = -1;
-  std::deque<std::pair<pslg_cdt::Face_handle, index_t>> border;
-  flood_component(g, inc, t, loops, t.cdt.infinite_face(), 0, no_index, border);
-  while (!border.empty()) {
-    const auto [f, l] = border.front();
-    border.pop_front();
-    flood_component(g, inc, t, loops, f, loops[l].depth + 1, l, border);
-  }
+  flood_levels(
+      t.cdt, [](pslg_cdt::Face_handle f) -> int& { return f->info().level; },
+      nesting_visitor{g, inc, t, loops});
   for (auto& l : loops) {
     PDD_ASSERT(l.depth >= 0);
     l.bounds_domain_inside = l.depth % 2 == 0;
