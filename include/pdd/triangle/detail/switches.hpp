@@ -1,0 +1,163 @@
+/// \file switches.hpp
+/// (Included by pdd/triangle/switches.hpp after its types.) Implementation of
+/// pdd::triangle::parse_switches: the numbers after q and a, the flag letters, and the reasons
+/// given for the switches pdd refuses.
+#pragma once
+
+#include <pdd/errors.hpp>
+
+#include <charconv>
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <system_error>
+
+namespace pdd::triangle::detail {
+
+/// The digits and '.' from position i on (Triangle's rule); advances i past them.
+inline std::string_view number_after(std::string_view text, std::size_t& i) {
+  const std::size_t start = i;
+  while (i < text.size() && ((text[i] >= '0' && text[i] <= '9') || text[i] == '.'))
+    ++i;
+  return text.substr(start, i - start);
+}
+
+/// Why a switch letter is refused (the message names the switch).
+inline std::string refusal(char c) {
+  const std::string sw = std::string("switch -") + c;
+  switch (c) {
+  case 'c':
+    return sw + " (mesh the convex hull) is not supported: pdd meshes the domain enclosed by "
+                "the segments";
+  case 'D':
+    return sw + " (conforming Delaunay) is not supported: pdd's meshes are constrained "
+                "Delaunay";
+  case 'u':
+    return sw + " (a user-defined triunsuitable test) is not supported";
+  case 'w':
+  case 'W':
+    return sw + " (weighted Delaunay) is not supported";
+  case 'o':
+    return sw + " (second-order triangles) is not supported";
+  case 'Y':
+    return sw + " (no Steiner points on the boundary) is not supported: pdd splits boundary "
+                "segments when refinement needs it";
+  case 'S':
+    return sw + " (a Steiner point budget) is not supported";
+  case 'e':
+  case 'v':
+  case 'g':
+    return sw + " (edge, Voronoi or OFF output) is not supported";
+  case 'i':
+  case 'F':
+  case 'l':
+  case 's':
+  case 'L':
+  case 'C':
+  case 'X':
+    return sw + " (a choice of Triangle's internal algorithms or checks) is not supported";
+  case 'h':
+  case 'H':
+  case '?':
+    return sw + " (help) is not a meshing switch; run pdd-triangle --help";
+  default:
+    return sw + " is not a Triangle switch pdd supports (supported: p r q a A Q V N E P B I "
+                "O z j n)";
+  }
+}
+
+/// A number after q or a, read with std::from_chars (digits and '.' only, the characters
+/// Triangle reads there). \throws switch_error for `1.2.3` and the like.
+inline double switch_number(std::string_view number, const char* letter) {
+  double v = 0.0;
+  const auto r = std::from_chars(number.data(), number.data() + number.size(), v);
+  if (r.ec != std::errc{} || r.ptr != number.data() + number.size() || !std::isfinite(v))
+    throw switch_error(std::string("switch -") + letter + std::string(number) + ": '" +
+                       std::string(number) + "' is not a number");
+  return v;
+}
+
+/// Sets the flag of a letter without a number; false for letters pdd does not support.
+inline bool set_flag(switches& s, char c) {
+  switch (c) {
+  case 'p':
+    s.poly = true;
+    return true;
+  case 'r':
+    s.refine = true;
+    return true;
+  case 'A':
+    s.regional_attributes = true;
+    return true;
+  case 'Q':
+    s.quiet = true;
+    return true;
+  case 'V':
+    ++s.verbose;
+    return true;
+  case 'N':
+    s.no_node = true;
+    return true;
+  case 'E':
+    s.no_ele = true;
+    return true;
+  case 'P':
+    s.no_poly = true;
+    return true;
+  case 'B':
+    s.no_boundary_markers = true;
+    return true;
+  case 'I':
+    s.no_iteration_numbers = true;
+    return true;
+  case 'O':
+    s.ignore_holes = true;
+    return true;
+  case 'z':
+    s.zero_based = true;
+    return true;
+  case 'j':
+    s.jettison = true;
+    return true;
+  case 'n':
+    s.neighbors = true;
+    return true;
+  default:
+    return false;
+  }
+}
+
+/// Shortest decimal form of v without an exponent (what Triangle can read back).
+inline std::string plain_number(double v) {
+  char buf[400];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::fixed);
+  return std::string(buf, r.ptr);
+}
+
+/// The switches as one canonical string (see pdd::triangle::to_string).
+inline std::string format_switches(const switches& s) {
+  std::string out;
+  const auto flag = [&out](bool on, char c) {
+    if (on) out += c;
+  };
+  flag(s.poly, 'p');
+  flag(s.refine, 'r');
+  if (s.quality && s.min_angle_deg > 0.0) out += 'q' + plain_number(s.min_angle_deg);
+  if (s.max_area > 0.0) out += 'a' + plain_number(s.max_area);
+  flag(s.regional_areas, 'a');
+  flag(s.regional_attributes, 'A');
+  flag(s.quiet, 'Q');
+  out.append(s.verbose, 'V');
+  flag(s.no_node, 'N');
+  flag(s.no_ele, 'E');
+  flag(s.no_poly, 'P');
+  flag(s.no_boundary_markers, 'B');
+  flag(s.no_iteration_numbers, 'I');
+  flag(s.ignore_holes, 'O');
+  flag(s.zero_based, 'z');
+  flag(s.jettison, 'j');
+  flag(s.neighbors, 'n');
+  return out;
+}
+
+} // namespace pdd::triangle::detail

@@ -1,0 +1,99 @@
+/// \file switches.hpp
+/// pdd::triangle::switches and pdd::triangle::parse_switches: Triangle's command-line switch
+/// string (`pq30a0.01`, Triangle 1.6's `triangle -h` text and its README), for pdd-triangle
+/// and the Python `pdd.triangulate`. Switches pdd cannot honour are refused, never ignored.
+#pragma once
+
+#include <pdd/errors.hpp>
+
+#include <string>
+#include <string_view>
+
+namespace pdd::triangle {
+
+/// A switch string pdd does not accept: an unknown or unsupported switch (the message names
+/// it and says why) or a malformed number.
+class switch_error : public error {
+public:
+  using error::error;
+};
+
+/// The switches of one Triangle run that pdd supports (Triangle's letters in brackets).
+struct switches {
+  bool poly = false;    ///< [p] mesh the PSLG of a .poly (set by a .poly file name too)
+  bool refine = false;  ///< [r] refine a previous mesh (pdd-triangle: -rp only)
+  bool quality = false; ///< [q] or [a]: Delaunay refinement (Triangle: a implies quality)
+  /// [q<angle>] the minimum angle in degrees: 20 after a bare q, 0 without q (as Triangle).
+  double min_angle_deg = 0.0;
+  double max_area = -1.0;            ///< [a<area>] uniform area bound; negative: none
+  bool regional_areas = false;       ///< [a] alone: the regions' area bounds apply
+  bool regional_attributes = false;  ///< [A] a regional attribute per triangle
+  bool quiet = false;                ///< [Q] no statistics
+  unsigned verbose = 0;              ///< [V] quality statistics (repeatable)
+  bool no_node = false;              ///< [N] no output .node (and no vertices in Python)
+  bool no_ele = false;               ///< [E] no output .ele
+  bool no_poly = false;              ///< [P] no output .poly
+  bool no_boundary_markers = false;  ///< [B] no boundary markers in the output
+  bool no_iteration_numbers = false; ///< [I] no .1 in output file names
+  bool ignore_holes = false;         ///< [O] drop the hole points
+  bool zero_based = false;           ///< [z] numbering from 0
+  bool jettison = false;             ///< [j] drop vertices no triangle uses
+  bool neighbors = false;            ///< [n] neighbours of every triangle (.neigh)
+};
+
+} // namespace pdd::triangle
+
+// The implementation works on the types above.
+#include <pdd/triangle/detail/switches.hpp>
+
+namespace pdd::triangle {
+
+/// The switch letters parse_switches accepts, for messages and documentation.
+inline constexpr std::string_view supported_switches = "p r q a A Q V N E P B I O z j n";
+
+/// Parses a switch string as Triangle does: one letter per switch, in any order and any
+/// number of times; `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,
+/// never `a2.6e-7`: Triangle reads no exponent, and neither does pdd); a bare `a` asks for
+/// the regional area bounds, and `a` with and without a number may both appear. A single
+/// leading '-' is allowed. pdd-triangle parses each `-...` argument with it.
+/// \throws switch_error naming the switch for every letter that is not supported (see
+///   detail::refusal for the reasons given), an area that is not > 0 or a number that does
+///   not parse (`q1.2.3`), and `rI` (Triangle refuses it too).
+/// Complexity O(length). Thread-safety: reentrant.
+inline switches parse_switches(std::string_view text) {
+  switches s;
+  if (text.starts_with('-')) text.remove_prefix(1);
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i++];
+    if (c == 'q' || c == 'a') {
+      const std::string_view number = detail::number_after(text, i);
+      if (c == 'q') {
+        s.quality = true;
+        s.min_angle_deg = number.empty() ? 20.0 : detail::switch_number(number, "q");
+      } else {
+        s.quality = true;
+        if (number.empty())
+          s.regional_areas = true;
+        else
+          s.max_area = detail::switch_number(number, "a");
+        if (!number.empty() && !(s.max_area > 0.0))
+          throw switch_error("switch -a" + std::string(number) +
+                             ": the maximum area must be greater than zero");
+      }
+      continue;
+    }
+    if (!detail::set_flag(s, c)) throw switch_error(detail::refusal(c));
+  }
+  if (s.refine && s.no_iteration_numbers)
+    throw switch_error("switches -r and -I: the -I switch cannot be used when refining a mesh "
+                       "(as in Triangle)");
+  return s;
+}
+
+/// Formats the switches back as one string (canonical order; numbers in shortest form).
+inline std::string to_string(const switches& s) {
+  return detail::format_switches(s);
+}
+
+} // namespace pdd::triangle

@@ -1,0 +1,85 @@
+// Triangle's switch strings: what parse_switches accepts, what it refuses and why.
+#include <pdd/triangle/switches.hpp>
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using pdd::triangle::parse_switches;
+using pdd::triangle::switch_error;
+
+namespace {
+std::string refusal(const std::string& s) {
+  try {
+    parse_switches(s);
+  } catch (const switch_error& e) {
+    return e.what();
+  }
+  return "accepted";
+}
+} // namespace
+
+TEST(Switches, QualityAndArea) {
+  const auto s = parse_switches("pq30a0.01");
+  EXPECT_TRUE(s.poly);
+  EXPECT_TRUE(s.quality);
+  EXPECT_EQ(s.min_angle_deg, 30.0);
+  EXPECT_EQ(s.max_area, 0.01);
+  EXPECT_FALSE(s.regional_areas);
+  EXPECT_EQ(pdd::triangle::to_string(s), "pq30a0.01");
+}
+
+TEST(Switches, BareQIsTwentyDegreesAndNoQIsZero) {
+  EXPECT_EQ(parse_switches("pq").min_angle_deg, 20.0);
+  EXPECT_EQ(parse_switches("q.5").min_angle_deg, 0.5);
+  const auto a = parse_switches("pa1");
+  EXPECT_TRUE(a.quality); // Triangle: a implies quality refinement, angle 0
+  EXPECT_EQ(a.min_angle_deg, 0.0);
+}
+
+TEST(Switches, NumbersStopAtTheFirstOtherCharacter) {
+  // Triangle reads only digits and '.': a2.6e-7 is a = 2.6, then e (refused).
+  EXPECT_EQ(parse_switches("a0.00000026").max_area, 0.00000026);
+  EXPECT_NE(refusal("a2.6e-7").find("switch -e"), std::string::npos);
+  const auto s = parse_switches("q25.5Aa");
+  EXPECT_EQ(s.min_angle_deg, 25.5);
+  EXPECT_TRUE(s.regional_attributes);
+  EXPECT_TRUE(s.regional_areas);
+  EXPECT_LT(s.max_area, 0.0);
+}
+
+TEST(Switches, AreaWithAndWithoutNumber) {
+  const auto s = parse_switches("-pa0.5a");
+  EXPECT_EQ(s.max_area, 0.5);
+  EXPECT_TRUE(s.regional_areas);
+  EXPECT_EQ(pdd::triangle::to_string(s), "pa0.5a");
+}
+
+TEST(Switches, EveryFlag) {
+  const auto s = parse_switches("prAQVVNEPBOzjn");
+  EXPECT_TRUE(s.poly && s.refine && s.regional_attributes && s.quiet);
+  EXPECT_EQ(s.verbose, 2u);
+  EXPECT_TRUE(s.no_node && s.no_ele && s.no_poly && s.no_boundary_markers);
+  EXPECT_TRUE(s.ignore_holes && s.zero_based && s.jettison && s.neighbors);
+  EXPECT_FALSE(s.quality);
+  EXPECT_TRUE(parse_switches("pI").no_iteration_numbers);
+  EXPECT_EQ(pdd::triangle::to_string(parse_switches("")), "");
+}
+
+TEST(Switches, RefusesUnsupportedSwitchesByName) {
+  for (const char c : std::string("cDuwWoYSevgiFlsLCXhH?x7%")) {
+    const std::string msg = refusal(std::string("p") + c);
+    EXPECT_NE(msg.find(std::string("switch -") + c), std::string::npos) << msg;
+  }
+  EXPECT_NE(refusal("pc").find("convex hull"), std::string::npos);
+  EXPECT_NE(refusal("pY").find("boundary"), std::string::npos);
+  EXPECT_NE(refusal("pk").find("supported: p r q a A Q V N E P B I O z j n"), std::string::npos);
+}
+
+TEST(Switches, RefusesBadNumbers) {
+  EXPECT_NE(refusal("a0").find("greater than zero"), std::string::npos);
+  EXPECT_NE(refusal("a.").find("'.' is not a number"), std::string::npos);
+  EXPECT_NE(refusal("q1.2.3").find("switch -q1.2.3"), std::string::npos);
+  EXPECT_NE(refusal("rI").find("-I"), std::string::npos);
+  EXPECT_NE(refusal("--p").find("switch --"), std::string::npos);
+}
