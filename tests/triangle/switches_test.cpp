@@ -56,8 +56,8 @@ TEST(Switches, AreaWithAndWithoutNumber) {
 }
 
 TEST(Switches, EveryFlag) {
-  const auto s = parse_switches("prAQVVNEPBOzjn");
-  EXPECT_TRUE(s.poly && s.refine && s.regional_attributes && s.quiet);
+  const auto s = parse_switches("pAQVVNEPBOzjn");
+  EXPECT_TRUE(s.poly && s.regional_attributes && s.quiet);
   EXPECT_EQ(s.verbose, 2u);
   EXPECT_TRUE(s.no_node && s.no_ele && s.no_poly && s.no_boundary_markers);
   EXPECT_TRUE(s.ignore_holes && s.zero_based && s.jettison && s.neighbors);
@@ -67,19 +67,24 @@ TEST(Switches, EveryFlag) {
 }
 
 TEST(Switches, RefusesUnsupportedSwitchesByName) {
-  for (const char c : std::string("cDuwWoYSevgiFlsLCXhH?x7%")) {
+  for (const char c : std::string("rcDuwWoYSevgiFlsLCXhH?x7%")) {
     const std::string msg = refusal(std::string("p") + c);
     EXPECT_NE(msg.find(std::string("switch -") + c), std::string::npos) << msg;
   }
+  EXPECT_NE(refusal("rpq").find("refine a previous mesh"), std::string::npos);
   EXPECT_NE(refusal("pc").find("convex hull"), std::string::npos);
   EXPECT_NE(refusal("pY").find("boundary"), std::string::npos);
-  EXPECT_NE(refusal("pk").find("supported: p r q a A Q V N E P B I O z j n"), std::string::npos);
+  EXPECT_NE(refusal("pk").find("supported: p q a A Q V N E P B I O z j n"), std::string::npos);
 }
 
 TEST(Switches, RefusesBadNumbers) {
   EXPECT_NE(refusal("a0").find("greater than zero"), std::string::npos);
   EXPECT_NE(refusal("a.").find("'.' is not a number"), std::string::npos);
   EXPECT_NE(refusal("q1.2.3").find("switch -q1.2.3"), std::string::npos);
-  EXPECT_NE(refusal("rI").find("-I"), std::string::npos);
   EXPECT_NE(refusal("--p").find("switch --"), std::string::npos);
+  // switches accumulate over several arguments, as Triangle reads them
+  const auto s = parse_switches("-a0.5", parse_switches("-pq30"));
+  EXPECT_TRUE(s.poly);
+  EXPECT_EQ(s.min_angle_deg, 30.0);
+  EXPECT_EQ(s.max_area, 0.5);
 }

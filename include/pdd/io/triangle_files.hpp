@@ -9,24 +9,40 @@
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 
+#include <array>
 #include <filesystem>
 #include <ostream>
+#include <span>
+#include <vector>
 
 namespace pdd {
+
+/// How the Triangle-format writers number and annotate (Triangle's switches z, B, A).
+struct triangle_format {
+  std::size_t first_index = 1; ///< 1 (Triangle's default) or 0 (switch z)
+  bool markers = true;         ///< vertex and segment marker columns (switch B: false)
+  /// .ele: the triangle marker as the one attribute column (pdd's default); false: no
+  /// column unless attributes are passed to write_ele.
+  bool marker_attribute = true;
+};
 
 /// Writes the mesh's vertices as a Triangle .node file, atomically: header
 /// `<#vertices> 2 0 1`, then `<id> <x> <y> <vertex marker>` with 1-based ids (Triangle's
 /// default) and coordinates in shortest round-trip form.
 /// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
 /// Complexity: linear. Thread-safety: reentrant.
-inline void write_node(const std::filesystem::path& path, const triangle_mesh& mesh) {
+/// `format` picks the first id and whether the marker column is written.
+inline void write_node(const std::filesystem::path& path, const triangle_mesh& mesh,
+                       const triangle_format& format = {}) {
   detail::check_mesh_for_writing(mesh, path);
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    out.integer(mesh.vertices.size()).put(" 2 0 1\n");
+    out.integer(mesh.vertices.size()).put(format.markers ? " 2 0 1\n" : " 2 0 0\n");
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
-      out.integer(i + 1).put(' ').num(mesh.vertices[i].x).put(' ').num(mesh.vertices[i].y);
-      out.put(' ').integer(detail::vertex_marker(mesh, i)).put('\n');
+      out.integer(i + format.first_index).put(' ').num(mesh.vertices[i].x).put(' ');
+      out.num(mesh.vertices[i].y);
+      if (format.markers) out.put(' ').integer(detail::vertex_marker(mesh, i));
+      out.put('\n');
     }
     out.flush();
   });
@@ -37,17 +53,30 @@ inline void write_node(const std::filesystem::path& path, const triangle_mesh& m
 /// triangle marker (the subdomain id in decoupled meshes) as the one triangle attribute.
 /// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
 /// Complexity: linear. Thread-safety: reentrant.
-inline void write_ele(const std::filesystem::path& path, const triangle_mesh& mesh) {
+/// `format` picks the first id and the attribute column: `attributes` (one value per
+/// triangle, e.g. Triangle's regional attributes) when given, else the marker when
+/// format.marker_attribute, else none (header `<#triangles> 3 0`).
+/// \throws pdd::error also when attributes is non-empty and not one value per triangle.
+inline void write_ele(const std::filesystem::path& path, const triangle_mesh& mesh,
+                      const triangle_format& format = {}, std::span<const double> attributes = {}) {
   detail::check_mesh_for_writing(mesh, path);
+  if (!attributes.empty() && attributes.size() != mesh.triangles.size())
+    throw error("cannot write '" + path.string() + "': " + std::to_string(attributes.size()) +
+                " triangle attributes for " + std::to_string(mesh.triangles.size()) + " triangles");
+  const bool column = !attributes.empty() || format.marker_attribute;
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    out.integer(mesh.triangles.size()).put(" 3 1\n");
+    out.integer(mesh.triangles.size()).put(column ? " 3 1\n" : " 3 0\n");
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
       const auto& tri = mesh.triangles[t];
-      out.integer(t + 1);
+      out.integer(t + format.first_index);
       for (const index_t v : tri)
-        out.put(' ').integer(std::size_t{v} + 1);
-      out.put(' ').integer(detail::triangle_marker(mesh, t)).put('\n');
+        out.put(' ').integer(std::size_t{v} + format.first_index);
+      if (!attributes.empty())
+        out.put(' ').num(attributes[t]);
+      else if (column)
+        out.put(' ').integer(detail::triangle_marker(mesh, t));
+      out.put('\n');
     }
     out.flush();
   });
@@ -55,23 +84,53 @@ inline void write_ele(const std::filesystem::path& path, const triangle_mesh& me
 
 /// Writes the mesh's boundary segments (mesh.segments) as a Triangle .poly file that refers
 /// to the .node file of the same stem (vertex count 0, as Triangle's own output .poly files
-/// do), atomically: `0 2 0 1`, `<#segments> 1`, `<id> <a> <b> <marker>` (1-based), `0` holes.
+/// do), atomically: `0 2 0 1`, `<#segments> 1`, `<id> <a> <b> <marker>` (1-based), the holes.
 /// read_poly() of this file together with write_node()'s file gives back the vertices, vertex
 /// markers and segments bit for bit.
 /// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
 /// Complexity: linear. Thread-safety: reentrant.
-inline void write_mesh_poly(const std::filesystem::path& path, const triangle_mesh& mesh) {
+/// `format` picks the first id and the marker column; `holes` are written in the holes
+/// section (Triangle copies the input's hole points there).
+inline void write_mesh_poly(const std::filesystem::path& path, const triangle_mesh& mesh,
+                            const triangle_format& format = {}, std::span<const point> holes = {}) {
   detail::check_mesh_for_writing(mesh, path);
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    out.put("# vertices are in the .node file of the same name\n0 2 0 1\n");
-    out.integer(mesh.segments.size()).put(" 1\n");
+    out.put("# vertices are in the .node file of the same name\n");
+    out.put(format.markers ? "0 2 0 1\n" : "0 2 0 0\n");
+    out.integer(mesh.segments.size()).put(format.markers ? " 1\n" : " 0\n");
+    const std::size_t f = format.first_index;
     for (std::size_t s = 0; s < mesh.segments.size(); ++s) {
       const mesh_edge& e = mesh.segments[s];
-      out.integer(s + 1).put(' ').integer(std::size_t{e.a} + 1).put(' ');
-      out.integer(std::size_t{e.b} + 1).put(' ').integer(e.marker).put('\n');
+      out.integer(s + f).put(' ').integer(std::size_t{e.a} + f).put(' ');
+      out.integer(std::size_t{e.b} + f);
+      if (format.markers) out.put(' ').integer(e.marker);
+      out.put('\n');
     }
-    out.put("0\n");
+    out.integer(holes.size()).put('\n');
+    for (std::size_t h = 0; h < holes.size(); ++h)
+      out.integer(h + f).put(' ').num(holes[h].x).put(' ').num(holes[h].y).put('\n');
+    out.flush();
+  });
+}
+
+/// Writes a Triangle .neigh file, atomically: header `<#triangles> 3`, then
+/// `<id> <n0> <n1> <n2>`, neighbour i across from vertex i, -1 on the boundary (Triangle
+/// writes -1 whatever the first index).
+/// \throws pdd::error when writing fails.
+inline void write_neigh(const std::filesystem::path& path,
+                        std::span<const std::array<long long, 3>> neighbors,
+                        const triangle_format& format = {}) {
+  write_file_atomically(path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    out.integer(neighbors.size()).put(" 3\n");
+    const auto f = static_cast<long long>(format.first_index);
+    for (std::size_t t = 0; t < neighbors.size(); ++t) {
+      out.integer(t + format.first_index);
+      for (const long long n : neighbors[t])
+        out.put(' ').integer(n < 0 ? -1LL : n + f);
+      out.put('\n');
+    }
     out.flush();
   });
 }

@@ -21,7 +21,6 @@ public:
 /// The switches of one Triangle run that pdd supports (Triangle's letters in brackets).
 struct switches {
   bool poly = false;    ///< [p] mesh the PSLG of a .poly (set by a .poly file name too)
-  bool refine = false;  ///< [r] refine a previous mesh (pdd-triangle: -rp only)
   bool quality = false; ///< [q] or [a]: Delaunay refinement (Triangle: a implies quality)
   /// [q<angle>] the minimum angle in degrees: 20 after a bare q, 0 without q (as Triangle).
   double min_angle_deg = 0.0;
@@ -49,19 +48,19 @@ struct switches {
 namespace pdd::triangle {
 
 /// The switch letters parse_switches accepts, for messages and documentation.
-inline constexpr std::string_view supported_switches = "p r q a A Q V N E P B I O z j n";
+inline constexpr std::string_view supported_switches = "p q a A Q V N E P B I O z j n";
 
 /// Parses a switch string as Triangle does: one letter per switch, in any order and any
 /// number of times; `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,
 /// never `a2.6e-7`: Triangle reads no exponent, and neither does pdd); a bare `a` asks for
 /// the regional area bounds, and `a` with and without a number may both appear. A single
-/// leading '-' is allowed. pdd-triangle parses each `-...` argument with it.
+/// leading '-' is allowed. pdd-triangle parses each `-...` argument with it, passing the
+/// switches so far as `s` (Triangle reads every argument that starts with '-').
 /// \throws switch_error naming the switch for every letter that is not supported (see
 ///   detail::refusal for the reasons given), an area that is not > 0 or a number that does
-///   not parse (`q1.2.3`), and `rI` (Triangle refuses it too).
+///   not parse (`q1.2.3`).
 /// Complexity O(length). Thread-safety: reentrant.
-inline switches parse_switches(std::string_view text) {
-  switches s;
+inline switches parse_switches(std::string_view text, switches s = {}) {
   if (text.starts_with('-')) text.remove_prefix(1);
   std::size_t i = 0;
   while (i < text.size()) {
@@ -85,9 +84,6 @@ inline switches parse_switches(std::string_view text) {
     }
     if (!detail::set_flag(s, c)) throw switch_error(detail::refusal(c));
   }
-  if (s.refine && s.no_iteration_numbers)
-    throw switch_error("switches -r and -I: the -I switch cannot be used when refining a mesh "
-                       "(as in Triangle)");
   return s;
 }
 

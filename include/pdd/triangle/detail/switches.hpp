@@ -26,6 +26,10 @@ inline std::string_view number_after(std::string_view text, std::size_t& i) {
 inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
   switch (c) {
+  case 'r':
+    return sw + " (refine a previous mesh) is not supported: pdd meshes PSLGs whose vertices "
+                "all lie on segment loops, and a mesh's interior vertices do not; mesh the "
+                "original .poly with the finer switches instead";
   case 'c':
     return sw + " (mesh the convex hull) is not supported: pdd meshes the domain enclosed by "
                 "the segments";
@@ -61,7 +65,7 @@ inline std::string refusal(char c) {
   case '?':
     return sw + " (help) is not a meshing switch; run pdd-triangle --help";
   default:
-    return sw + " is not a Triangle switch pdd supports (supported: p r q a A Q V N E P B I "
+    return sw + " is not a Triangle switch pdd supports (supported: p q a A Q V N E P B I "
                 "O z j n)";
   }
 }
@@ -82,9 +86,6 @@ inline bool set_flag(switches& s, char c) {
   switch (c) {
   case 'p':
     s.poly = true;
-    return true;
-  case 'r':
-    s.refine = true;
     return true;
   case 'A':
     s.regional_attributes = true;
@@ -141,7 +142,6 @@ inline std::string format_switches(const switches& s) {
     if (on) out += c;
   };
   flag(s.poly, 'p');
-  flag(s.refine, 'r');
   if (s.quality && s.min_angle_deg > 0.0) out += 'q' + plain_number(s.min_angle_deg);
   if (s.max_area > 0.0) out += 'a' + plain_number(s.max_area);
   flag(s.regional_areas, 'a');

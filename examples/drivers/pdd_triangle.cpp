@@ -1,0 +1,189 @@
+// pdd-triangle: a Triangle-compatible command. `pdd-triangle -pq30a0.01 key.poly` reads and
+// writes the files `triangle -pq30a0.01 key.poly` does (key.1.node, key.1.ele, key.1.poly) and
+// prints Triangle's statistics, with pdd's decoupled pipeline doing the meshing.
+//
+//   pdd-triangle [-SWITCHES ...] INPUT[.poly] [--threads T] [--subdomains N]
+//
+// Switches (Triangle 1.6's letters; pdd::triangle::parse_switches): p, q[angle], a[area],
+// a (regional area bounds), A, Q, V, N, E, P, B, I, O, z, j, n. Every other switch (-r
+// among them: pdd cannot refine a previous mesh) is refused by name.
+// Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 4 internal error.
+#include <pdd/errors.hpp>
+#include <pdd/io/poly.hpp>
+#include <pdd/io/triangle_files.hpp>
+#include <pdd/mesh/quality.hpp>
+#include <pdd/triangle/file_names.hpp>
+#include <pdd/triangle/switches.hpp>
+#include <pdd/triangle/triangulate.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace {
+
+constexpr int ok = 0, bad_input = 1, usage = 2, internal = 4;
+
+struct cli_options {
+  std::string input;
+  std::vector<std::string> switch_args; ///< the -... arguments, in order
+  pdd::triangle::triangulate_options run;
+};
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+/// Triangle's -V block: extremes and the angle histogram in 10-degree bins.
+void print_quality(const pdd::triangle_mesh& m) {
+  const pdd::mesh_statistics q = pdd::compute_statistics(m);
+  std::printf("Mesh quality statistics:\n\n");
+  std::printf("  Largest area: %.6g  |  Largest radius-edge ratio: %.6g\n", q.max_area,
+              q.max_ratio);
+  std::printf("  Smallest angle: %.6g  |  Largest angle: %.6g\n\n", q.min_angle_deg,
+              q.max_angle_deg);
+  std::printf("  Angle histogram:\n");
+  for (int b = 0; b < 9; ++b) {
+    std::size_t lo = 0, hi = 0;
+    for (int d = 0; d < 10; ++d) {
+      lo += q.angle_histogram[static_cast<std::size_t>(10 * b + d)];
+      hi += q.angle_histogram[static_cast<std::size_t>(90 + 10 * b + d)];
+    }
+    std::printf("    %3d - %3d degrees: %8zu    |  %3d - %3d degrees: %8zu\n", 10 * b, 10 * b + 10,
+                lo, 90 + 10 * b, 100 + 10 * b, hi);
+  }
+  std::printf("\n");
+}
+
+/// Triangle's closing statistics block.
+void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
+  const auto nb = t.neighbors.empty() ? pdd::triangle::detail::neighbors(t.mesh) : t.neighbors;
+  const auto e = pdd::triangle::detail::count_edges(nb);
+  std::printf("\nStatistics:\n\n  Input vertices: %zu\n", in.vertices.size());
+  std::printf("  Input segments: %zu\n", in.segments.size());
+  std::printf("  Input holes: %zu\n", in.holes.size());
+  std::printf("\n  Mesh vertices: %zu\n  Mesh triangles: %zu\n", t.mesh.vertices.size(),
+              t.mesh.triangles.size());
+  std::printf("  Mesh edges: %zu\n  Mesh exterior boundary edges: %zu\n", e.edges, e.boundary);
+  std::printf("  Mesh interior boundary edges: %zu\n", t.mesh.segments.size() - e.boundary);
+  std::printf("  Mesh subsegments (constrained edges): %zu\n\n", t.mesh.segments.size());
+}
+
+/// Writes one output file (or says it does not) as Triangle reports it.
+template <class Write>
+void output(const std::string& name, const char* not_written, bool quiet, Write write) {
+  if (name.empty()) {
+    if (!quiet) std::printf("NOT writing %s.\n", not_written);
+    return;
+  }
+  if (!quiet) std::printf("Writing %s.\n", name.c_str());
+  write(name);
+}
+
+int run(const cli_options& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  pdd::triangle::switches sw;
+  for (const std::string& a : o.switch_args)
+    sw = pdd::triangle::parse_switches(a, sw);
+  pdd::triangle::switches probe = sw;
+  const std::string base = pdd::triangle::make_file_names(o.input, probe).base; // sets p
+  if (!probe.poly)
+    throw pdd::triangle::switch_error("switch -p is required (or a .poly input): pdd meshes the "
+                                      "domain enclosed by segments, not the convex hull of a "
+                                      ".node file");
+  const bool node_read = std::filesystem::exists(base + ".node");
+  const pdd::triangle::file_names f = pdd::triangle::make_file_names(o.input, sw, node_read);
+  if (!sw.quiet) std::printf("Opening %s.\n", f.poly.c_str());
+  const pdd::pslg in = pdd::read_poly(f.poly);
+  if (!sw.quiet) std::printf("Meshing with pdd's decoupled pipeline.\n");
+  const auto tm = std::chrono::steady_clock::now();
+  const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
+  if (!sw.quiet) {
+    std::size_t n = 0;
+    for (const auto& r : t.runs)
+      n += r.subdomains;
+    std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms_since(tm), n);
+  }
+  pdd::triangle_format fmt;
+  fmt.first_index = sw.zero_based ? 0 : 1;
+  fmt.markers = !sw.no_boundary_markers;
+  fmt.marker_attribute = false;
+  output(f.node, "a .node file", sw.quiet,
+         [&](const std::string& p) { pdd::write_node(p, t.mesh, fmt); });
+  output(f.ele, "an .ele file", sw.quiet,
+         [&](const std::string& p) { pdd::write_ele(p, t.mesh, fmt, t.triangle_attributes); });
+  output(f.out_poly, "a .poly file", sw.quiet,
+         [&](const std::string& p) { pdd::write_mesh_poly(p, t.mesh, fmt, in.holes); });
+  if (!f.neigh.empty()) {
+    if (!sw.quiet) std::printf("Writing %s.\n", f.neigh.c_str());
+    pdd::write_neigh(f.neigh, t.neighbors, fmt);
+  }
+  if (!sw.quiet) {
+    std::printf("\nTotal running milliseconds:  %.0f\n", ms_since(t0));
+    print_statistics(in, t);
+    if (sw.verbose > 0) print_quality(t.mesh);
+  }
+  return ok;
+}
+
+int fail(const char* what, const std::exception& e, int code) {
+  std::fprintf(stderr, "pdd-triangle: %s: %s\n", what, e.what());
+  return code;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  cli_options o;
+  // Triangle's switches (-pq30 ...) are not CLI11 options: take every single-dash argument
+  // out before CLI11 parses the rest (--threads, --subdomains, --help, the input).
+  std::vector<std::string> rest{argv[0]};
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a.size() > 1 && a[0] == '-' && a[1] != '-')
+      o.switch_args.push_back(a);
+    else
+      rest.push_back(a);
+  }
+  CLI::App app{"pdd-triangle: Triangle's command line (switches -pq30a0.01 ...), meshed by pdd"};
+  app.add_option("input", o.input, "input: NAME.poly, or NAME with -p")->required();
+  app.add_option("--subdomains", o.run.subdomains,
+                 "number of subdomains (1: monolithic kernel; default: automatic)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--threads", o.run.threads, "threads (default: all cores)")
+      ->check(CLI::Range(1u, 4096u));
+  app.footer("Switches: p q[angle] a[area] a A Q V N E P B I O z j n (Triangle 1.6's meaning). "
+             "Any other switch is refused.");
+  try {
+    std::vector<const char*> args;
+    for (const std::string& a : rest)
+      args.push_back(a.c_str());
+    app.parse(static_cast<int>(args.size()), args.data());
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? ok : usage;
+  }
+  try {
+    return run(o);
+  } catch (const pdd::triangle::switch_error& e) {
+    return fail("error", e, usage);
+  } catch (const pdd::input_error& e) {
+    return fail("error", e, bad_input);
+  } catch (const pdd::geometry_error& e) {
+    std::fprintf(stderr, "pdd-triangle: error: %s: %s\n", o.input.c_str(), e.what());
+    return bad_input;
+  } catch (const pdd::internal_error& e) {
+    return fail("internal error", e, internal);
+  } catch (const pdd::meshing_error& e) {
+    return fail("internal error", e, internal);
+  } catch (const pdd::error& e) { // limits, decomposition, files that cannot be read or written
+    return fail("error", e, bad_input);
+  } catch (const std::exception& e) {
+    return fail("internal error", e, internal);
+  }
+}

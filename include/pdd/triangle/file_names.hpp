@@ -1,0 +1,66 @@
+/// \file file_names.hpp
+/// pdd::triangle::file_names: the files a `triangle` command line reads and writes, by
+/// Triangle 1.6's rules (its README and `triangle -h`): `key.poly` -> `key.1.node`,
+/// `key.1.ele`, `key.1.poly`; `key.1.poly` -> `key.2.*`; -I drops the iteration number.
+#pragma once
+
+#include <pdd/triangle/switches.hpp>
+
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+namespace pdd::triangle {
+
+/// Input and output names of one run (empty: not read / not written).
+struct file_names {
+  std::string base; ///< the input name without its extension (`dir/key`, `dir/key.1`)
+  std::string poly; ///< the .poly read (-p)
+  std::string node, ele, out_poly, neigh; ///< the outputs
+};
+
+namespace detail {
+/// Removes `ext` from the end of name; true if it was there.
+inline bool strip_suffix(std::string& name, std::string_view ext) {
+  if (name.size() <= ext.size() || !std::string_view(name).ends_with(ext)) return false;
+  name.resize(name.size() - ext.size());
+  return true;
+}
+} // namespace detail
+
+/// The names Triangle uses for input `name` and switches `sw`, which this updates as Triangle
+/// does: a `.poly` name sets p, `.node` is dropped from the name. Output stem: `<base>.1`
+/// when the base has no numeric last component, `<stem>.<n+1>` when it ends in `.<n>`
+/// (`key.1.poly` writes `key.2.*`, as Triangle numbers iterations), `<base>` with -I. Outputs that
+/// -N, -E, -P suppress are left empty; with -I, the .poly is never written and neither is the .node
+/// when `node_was_read` (Triangle will not overwrite its input); .neigh only with -n. \throws
+/// switch_error for an `.area` or `.ele` name (refining a mesh is not supported).
+inline file_names make_file_names(std::string name, switches& sw, bool node_was_read = false) {
+  if (detail::strip_suffix(name, ".area"))
+    throw switch_error("'" + name +
+                       ".area': per-triangle area constraints (.area files, -ra) "
+                       "are not supported");
+  detail::strip_suffix(name, ".node");
+  if (detail::strip_suffix(name, ".poly")) sw.poly = true;
+  if (detail::strip_suffix(name, ".ele"))
+    throw switch_error("'" + name +
+                       ".ele': refining a previous mesh (an .ele input, Triangle's "
+                       "-r) is not supported");
+  file_names f;
+  f.base = name;
+  if (sw.poly) f.poly = name + ".poly";
+  std::string stem = name + ".1";
+  const std::size_t dot = name.find_last_of('.');
+  if (dot != std::string::npos && dot > 0 && dot + 1 < name.size() &&
+      name.find_first_not_of("0123456789", dot + 1) == std::string::npos &&
+      name.size() - dot - 1 <= 9 && name.find('/', dot) == std::string::npos)
+    stem = name.substr(0, dot + 1) + std::to_string(std::stoull(name.substr(dot + 1)) + 1);
+  if (sw.no_iteration_numbers) stem = name;
+  if (!sw.no_node && !(sw.no_iteration_numbers && node_was_read)) f.node = stem + ".node";
+  if (!sw.no_ele) f.ele = stem + ".ele";
+  if (sw.poly && !sw.no_poly && !sw.no_iteration_numbers) f.out_poly = stem + ".poly";
+  if (sw.neighbors) f.neigh = stem + ".neigh";
+  return f;
+}
+
+} // namespace pdd::triangle

@@ -1,0 +1,159 @@
+// pdd-triangle end to end: Triangle's output files, switches that change them, statistics,
+// refusals; outputs read back by pdd's reader.
+#include <pdd/io/poly.hpp>
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct run_result {
+  int code;
+  std::string output;
+};
+
+run_result run_in(const fs::path& dir, const std::string& args) {
+  const std::string cmd =
+      "cd '" + dir.string() + "' && '" + std::string(PDD_TRIANGLE_EXE) + "' " + args + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return {-1, "popen failed"};
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p))
+    out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+/// A fresh folder holding key.poly.
+fs::path folder_with_key(const std::string& name) {
+  const fs::path dir = pdd::test::temp_path(name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  fs::copy_file(pdd::test::bundled_data("key.poly"), dir / "key.poly");
+  return dir;
+}
+
+std::string first_line(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);
+  return line;
+}
+
+std::string second_line(const fs::path& p) {
+  std::ifstream in(p);
+  std::string line;
+  std::getline(in, line);
+  std::getline(in, line);
+  return line;
+}
+
+} // namespace
+
+TEST(PddTriangle, WritesTriangleFilesThatReadBack) {
+  const fs::path dir = folder_with_key("pt_basic");
+  const auto r = run_in(dir, "-pq30a0.01 key.poly");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* s : {"Opening key.poly.", "Writing key.1.node.", "Writing key.1.ele.",
+                        "Writing key.1.poly.", "Input vertices: 54", "Input segments: 54",
+                        "Input holes: 1", "Mesh triangles: ", "Mesh subsegments"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+  // key.1.poly refers to key.1.node: pdd's reader gives the mesh's vertices and subsegments
+  const pdd::pslg back = pdd::read_poly(dir / "key.1.poly");
+  const pdd::pslg key = pdd::read_poly(dir / "key.poly");
+  ASSERT_GT(back.vertices.size(), key.vertices.size());
+  for (std::size_t i = 0; i < key.vertices.size(); ++i)
+    EXPECT_EQ(back.vertices[i], key.vertices[i]) << i;
+  EXPECT_EQ(back.holes, key.holes);
+  EXPECT_GT(back.segments.size(), key.segments.size());
+  EXPECT_EQ(first_line(dir / "key.1.node").substr(first_line(dir / "key.1.node").find(' ')),
+            " 2 0 1");
+  const std::string ele = first_line(dir / "key.1.ele");
+  EXPECT_EQ(ele.substr(ele.find(' ')), " 3 0"); // no attribute column without -A
+  EXPECT_EQ(second_line(dir / "key.1.ele").substr(0, 2), "1 ");
+  // the statistics count what the files hold
+  EXPECT_NE(r.output.find("Mesh triangles: " + ele.substr(0, ele.find(' '))), std::string::npos);
+  // a second run numbers its outputs from the first one's name
+  const auto r2 = run_in(dir, "-pqQ key.1");
+  ASSERT_EQ(r2.code, 1) << r2.output; // key.1.poly's mesh vertices are not all on segments
+  EXPECT_NE(r2.output.find("isolated vertices"), std::string::npos) << r2.output;
+}
+
+TEST(PddTriangle, SwitchesChangeTheFiles) {
+  const fs::path dir = folder_with_key("pt_switches");
+  auto r = run_in(dir, "-pq -a0.02 -zBAnQ key.poly --threads 2 --subdomains 1");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(r.output, ""); // -Q: nothing printed
+  const std::string node = first_line(dir / "key.1.node");
+  EXPECT_EQ(node.substr(node.find(' ')), " 2 0 0");              // -B: no markers
+  EXPECT_EQ(second_line(dir / "key.1.node").substr(0, 2), "0 "); // -z
+  const std::string ele = first_line(dir / "key.1.ele");
+  EXPECT_EQ(ele.substr(ele.find(' ')), " 3 1"); // -A: the regional attribute column
+  EXPECT_TRUE(fs::exists(dir / "key.1.neigh"));
+  EXPECT_EQ(first_line(dir / "key.1.neigh"), ele.substr(0, ele.find(' ')) + " 3");
+
+  const fs::path d2 = folder_with_key("pt_nep");
+  r = run_in(d2, "-pqNEP key");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("NOT writing a .node file."), std::string::npos);
+  EXPECT_NE(r.output.find("NOT writing an .ele file."), std::string::npos);
+  EXPECT_NE(r.output.find("NOT writing a .poly file."), std::string::npos);
+  EXPECT_EQ(std::distance(fs::directory_iterator(d2), fs::directory_iterator{}), 1);
+
+  const fs::path d3 = folder_with_key("pt_i");
+  r = run_in(d3, "-pqI key.poly");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_TRUE(fs::exists(d3 / "key.node"));
+  EXPECT_TRUE(fs::exists(d3 / "key.ele"));
+  // the input .poly is never overwritten
+  std::ifstream a(d3 / "key.poly"), b(pdd::test::bundled_data("key.poly"));
+  std::stringstream sa, sb;
+  sa << a.rdbuf();
+  sb << b.rdbuf();
+  EXPECT_EQ(sa.str(), sb.str());
+}
+
+TEST(PddTriangle, VerboseQualityStatistics) {
+  const fs::path dir = folder_with_key("pt_v");
+  const auto r = run_in(dir, "-pq25a0.005V key.poly");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("Mesh quality statistics:"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Angle histogram:"), std::string::npos);
+  // no angle below 20 degrees with q25
+  EXPECT_NE(r.output.find("  0 -  10 degrees:        0"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(" 10 -  20 degrees:        0"), std::string::npos) << r.output;
+}
+
+TEST(PddTriangle, RefusesWhatItCannotDo) {
+  const fs::path dir = folder_with_key("pt_refuse");
+  struct refusal {
+    const char* args;
+    const char* message;
+    int code;
+  };
+  for (const refusal& c :
+       {refusal{"-pqY key.poly", "switch -Y", 2},
+        refusal{"-rpq key.1", "switch -r (refine a previous mesh)", 2},
+        refusal{"-q key.node", "switch -p is required", 2},
+        refusal{"-pq key.1.ele", "refining a previous mesh", 2},
+        refusal{"-pa0 key.poly", "greater than zero", 2},
+        refusal{"-pq missing.poly", "missing.poly", 1}, refusal{"-pq", "input is required", 2},
+        refusal{"-pq key.poly --threads 0", "--threads", 2}}) {
+    const auto r = run_in(dir, c.args);
+    EXPECT_EQ(r.code, c.code) << c.args << "\n" << r.output;
+    EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\n" << r.output;
+  }
+  EXPECT_FALSE(fs::exists(dir / "key.1.node")); // nothing written by a refused run
+}

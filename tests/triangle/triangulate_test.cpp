@@ -1,0 +1,226 @@
+// pdd::triangle::triangulate and make_file_names: Triangle's semantics of p, q, a, a alone,
+// A, O, j, n on pdd meshes, Triangle's output file names, and determinism across threads.
+#include <pdd/io/poly.hpp>
+#include <pdd/mesh/quality.hpp>
+#include <pdd/triangle/file_names.hpp>
+#include <pdd/triangle/triangulate.hpp>
+
+#include <gtest/gtest.h>
+
+#include "test_support.hpp"
+#include "verified.hpp"
+
+#include <array>
+#include <string>
+#include <vector>
+
+namespace tri = pdd::triangle;
+
+namespace {
+
+pdd::pslg square_loop(pdd::pslg g, double x0, double y0, double side, int marker) {
+  const std::array<pdd::point, 4> p{
+      {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}}};
+  g.add_loop(p, marker);
+  return g;
+}
+
+/// Two disjoint squares [0,1]^2 and [2,3]x[0,1], the second with a square hole.
+pdd::pslg two_squares() {
+  pdd::pslg g = square_loop({}, 0, 0, 1, 1);
+  g = square_loop(std::move(g), 2, 0, 1, 2);
+  g = square_loop(std::move(g), 2.25, 0.25, 0.5, 3);
+  g.holes.push_back({2.5, 0.5});
+  return g;
+}
+
+double centroid_x(const pdd::triangle_mesh& m, std::size_t t) {
+  const auto& v = m.triangles[t];
+  return (m.vertices[v[0]].x + m.vertices[v[1]].x + m.vertices[v[2]].x) / 3.0;
+}
+
+double area(const pdd::triangle_mesh& m, std::size_t t) {
+  const auto& v = m.triangles[t];
+  const pdd::point a = m.vertices[v[0]], b = m.vertices[v[1]], c = m.vertices[v[2]];
+  return 0.5 * ((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+}
+
+} // namespace
+
+TEST(Triangulate, QualityAndAreaOnKey) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const tri::triangulation t = tri::triangulate(key, tri::parse_switches("pq30a0.01"));
+  pdd::mesh_criteria c;
+  c.min_angle_deg = 30.0;
+  c.max_area = 0.01;
+  pdd::test::expect_verified(t.mesh, key, c, "key pq30a0.01");
+  EXPECT_GE(pdd::compute_statistics(t.mesh).min_angle_deg, 30.0);
+  // Triangle's numbering: the input vertices first, in input order, with their markers.
+  ASSERT_GE(t.mesh.vertices.size(), key.vertices.size());
+  for (std::size_t i = 0; i < key.vertices.size(); ++i) {
+    EXPECT_EQ(t.mesh.vertices[i], key.vertices[i]) << i;
+    EXPECT_EQ(t.mesh.vertex_markers[i], key.vertex_markers[i]) << i;
+  }
+  EXPECT_TRUE(t.triangle_attributes.empty());
+  EXPECT_TRUE(t.neighbors.empty());
+  ASSERT_EQ(t.runs.size(), 1u);
+  EXPECT_EQ(t.runs[0].triangles, t.mesh.triangles.size());
+}
+
+TEST(Triangulate, SameArraysForAnyThreadCount) {
+  const pdd::pslg pipe = pdd::read_poly(pdd::test::bundled_data("pipe.poly"));
+  const auto sw = tri::parse_switches("pq25a0.002An");
+  const auto one = tri::triangulate(pipe, sw, {.threads = 1, .subdomains = 8});
+  const auto two = tri::triangulate(pipe, sw, {.threads = 2, .subdomains = 8});
+  ASSERT_EQ(one.runs[0].subdomains, 8u);
+  EXPECT_EQ(one.mesh.vertices, two.mesh.vertices);
+  EXPECT_EQ(one.mesh.triangles, two.mesh.triangles);
+  EXPECT_EQ(one.neighbors, two.neighbors);
+  EXPECT_EQ(one.triangle_attributes, two.triangle_attributes);
+  pdd::mesh_criteria c;
+  c.min_angle_deg = 25.0;
+  c.max_area = 0.002;
+  pdd::test::expect_verified(one.mesh, pipe, c, "pipe N=8");
+}
+
+TEST(Triangulate, RegionalAttributesAndAreas) {
+  pdd::pslg g = two_squares();
+  g.regions.push_back({{0.5, 0.5}, 7.0, 0.001});
+  g.regions.push_back({{2.1, 0.1}, 9.0, 0.02});
+  g.regions.push_back({{2.5, 0.5}, 100.0, 1e-6}); // in the hole: ignored, as in Triangle
+  const auto t = tri::triangulate(g, tri::parse_switches("pqAa"));
+  ASSERT_EQ(t.triangle_attributes.size(), t.mesh.triangles.size());
+  ASSERT_EQ(t.runs.size(), 2u); // the bounds differ: one run per component
+  std::size_t left = 0, right = 0;
+  for (std::size_t i = 0; i < t.mesh.triangles.size(); ++i) {
+    const bool is_left = centroid_x(t.mesh, i) < 1.5;
+    EXPECT_EQ(t.triangle_attributes[i], is_left ? 7.0 : 9.0) << i;
+    EXPECT_LE(area(t.mesh, i), is_left ? 0.001 : 0.02) << i;
+    EXPECT_GT(area(t.mesh, i), 1e-6) << i;
+    (is_left ? left : right) += 1;
+  }
+  EXPECT_GT(left, 1000u); // area 1 under 0.001
+  EXPECT_LT(right, left);
+  pdd::mesh_criteria c;
+  c.max_area = 0.02;
+  pdd::test::expect_verified(t.mesh, g, c, "two squares");
+  for (std::size_t i = 0; i < g.vertices.size(); ++i)
+    EXPECT_EQ(t.mesh.vertices[i], g.vertices[i]) << i;
+
+  // Without 'a' alone the regions' areas do not apply; A alone labels one run's mesh.
+  const auto u = tri::triangulate(g, tri::parse_switches("pqA"));
+  ASSERT_EQ(u.runs.size(), 1u);
+  for (std::size_t i = 0; i < u.mesh.triangles.size(); ++i)
+    EXPECT_EQ(u.triangle_attributes[i], centroid_x(u.mesh, i) < 1.5 ? 7.0 : 9.0) << i;
+  EXPECT_LT(u.mesh.triangles.size(), 200u);
+  // A uniform bound below the regional one wins.
+  const auto w = tri::triangulate(g, tri::parse_switches("pqa0.0005a"));
+  for (std::size_t i = 0; i < w.mesh.triangles.size(); ++i)
+    EXPECT_LE(area(w.mesh, i), 0.0005) << i;
+}
+
+TEST(Triangulate, NeighborsAreSymmetricAndAcrossFromTheVertex) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const auto t = tri::triangulate(key, tri::parse_switches("pq20a0.005n"));
+  ASSERT_EQ(t.neighbors.size(), t.mesh.triangles.size());
+  std::size_t boundary = 0;
+  for (std::size_t i = 0; i < t.neighbors.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const long long n = t.neighbors[i][static_cast<std::size_t>(k)];
+      if (n < 0) {
+        ++boundary;
+        continue;
+      }
+      const auto& me = t.mesh.triangles[i];
+      const auto& other = t.mesh.triangles[static_cast<std::size_t>(n)];
+      // the neighbour holds the edge opposite vertex k and names i back
+      int shared = 0, back = 0;
+      for (int j = 0; j < 3; ++j) {
+        for (int l = 1; l < 3; ++l)
+          shared += other[static_cast<std::size_t>(j)] == me[static_cast<std::size_t>((k + l) % 3)];
+        back += t.neighbors[static_cast<std::size_t>(n)][static_cast<std::size_t>(j)] ==
+                static_cast<long long>(i);
+      }
+      EXPECT_EQ(shared, 2);
+      EXPECT_EQ(back, 1);
+    }
+  EXPECT_EQ(boundary, t.mesh.segments.size()); // every boundary edge is a subsegment
+}
+
+TEST(Triangulate, RefusesWithoutPAndHolesWithO) {
+  const pdd::pslg g = two_squares();
+  try {
+    tri::triangulate(g, tri::parse_switches("q"));
+    FAIL() << "no p accepted";
+  } catch (const tri::switch_error& e) {
+    EXPECT_NE(std::string(e.what()).find("switch -p is required"), std::string::npos);
+  }
+  // O drops the hole point: pdd then needs one for the inner loop and says so.
+  try {
+    tri::triangulate(g, tri::parse_switches("pO"));
+    FAIL() << "a hole loop without its point accepted";
+  } catch (const pdd::geometry_error& e) {
+    EXPECT_NE(std::string(e.what()).find("hole"), std::string::npos) << e.what();
+  }
+  // O on a domain without holes changes nothing.
+  const pdd::pslg sq = square_loop({}, 0, 0, 1, 1);
+  EXPECT_EQ(tri::triangulate(sq, tri::parse_switches("pOqa0.1")).mesh.triangles,
+            tri::triangulate(sq, tri::parse_switches("pqa0.1")).mesh.triangles);
+}
+
+TEST(Triangulate, JettisonKeepsEveryUsedVertex) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const auto a = tri::triangulate(key, tri::parse_switches("pqa0.01"));
+  const auto b = tri::triangulate(key, tri::parse_switches("pqa0.01j"));
+  EXPECT_EQ(b.jettisoned_vertices, 0u); // pdd's inputs have no isolated vertices
+  EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
+  // the helper itself: an unused vertex goes, the rest keep their order
+  pdd::triangle_mesh m = a.mesh;
+  m.vertices.insert(m.vertices.begin() + 3, pdd::point{9, 9});
+  m.vertex_markers.insert(m.vertex_markers.begin() + 3, 5);
+  for (auto& t : m.triangles)
+    for (auto& v : t)
+      v += v >= 3;
+  for (auto& s : m.segments) {
+    s.a += s.a >= 3;
+    s.b += s.b >= 3;
+  }
+  EXPECT_EQ(tri::detail::jettison_unused_vertices(m), 1u);
+  EXPECT_EQ(m.vertices, a.mesh.vertices);
+  EXPECT_EQ(m.triangles, a.mesh.triangles);
+  EXPECT_EQ(m.vertex_markers, a.mesh.vertex_markers);
+}
+
+TEST(FileNames, TriangleRules) {
+  tri::switches s;
+  auto f = tri::make_file_names("dir/key.poly", s);
+  EXPECT_TRUE(s.poly);
+  EXPECT_EQ(f.poly, "dir/key.poly");
+  EXPECT_EQ(f.node, "dir/key.1.node");
+  EXPECT_EQ(f.ele, "dir/key.1.ele");
+  EXPECT_EQ(f.out_poly, "dir/key.1.poly");
+  EXPECT_EQ(f.neigh, "");
+  s = tri::parse_switches("pn");
+  f = tri::make_file_names("key.1", s);
+  EXPECT_EQ(f.poly, "key.1.poly");
+  EXPECT_EQ(f.node, "key.2.node");
+  EXPECT_EQ(f.neigh, "key.2.neigh");
+  s = tri::parse_switches("p");
+  EXPECT_EQ(tri::make_file_names("a.b/key.09.poly", s).ele, "a.b/key.10.ele");
+  EXPECT_EQ(tri::make_file_names("v1.2x.poly", s).ele, "v1.2x.1.ele");
+  EXPECT_EQ(tri::make_file_names("a.b/key", s).ele, "a.b/key.1.ele");
+  s = tri::parse_switches("pNEP");
+  f = tri::make_file_names("key.poly", s);
+  EXPECT_EQ(f.node + f.ele + f.out_poly, "");
+  s = tri::parse_switches("pI");
+  f = tri::make_file_names("key.poly", s);
+  EXPECT_EQ(f.node, "key.node");
+  EXPECT_EQ(f.ele, "key.ele");
+  EXPECT_EQ(f.out_poly, ""); // Triangle never overwrites the input .poly
+  EXPECT_EQ(tri::make_file_names("key.poly", s, true).node, ""); // nor a .node it read
+  s = {};
+  EXPECT_EQ(tri::make_file_names("key.node", s).base, "key");
+  EXPECT_FALSE(s.poly);
+  EXPECT_THROW(tri::make_file_names("key.1.ele", s), tri::switch_error);
+  EXPECT_THROW(tri::make_file_names("key.1.area", s), tri::switch_error);
+}
