@@ -1,0 +1,242 @@
+// The `pdd` Python module: pdd.triangulate (the `triangle` package's call, through pdd's
+// Triangle switch parser) and pdd.mesh (keywords, numpy arrays, statistics as a dict).
+#include "arrays.hpp"
+#include "sizing.hpp"
+
+#include <pdd/errors.hpp>
+#include <pdd/generate.hpp>
+#include <pdd/geometry/validate.hpp>
+#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/mesh/quality.hpp>
+#include <pdd/shielding/apply_shields.hpp>
+#include <pdd/shielding/shield.hpp>
+#include <pdd/triangle/switches.hpp>
+#include <pdd/triangle/triangulate.hpp>
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <limits>
+#include <memory>
+#include <optional>
+#include <set>
+#include <string>
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+namespace pdd::python {
+namespace {
+
+/// The triangle package's input dict as a pslg; unknown and unsupported keys are refused.
+pslg pslg_from_dict(const py::dict& tri) {
+  static const std::set<std::string> known{"vertices",        "vertex_markers", "segments",
+                                           "segment_markers", "holes",          "regions"};
+  for (const auto& item : tri) {
+    const auto key = py::str(item.first).cast<std::string>();
+    if (key == "vertex_attributes" && py::len(item.second) == 0) continue;
+    if (key == "vertex_attributes")
+      throw bad_argument("'vertex_attributes' are not supported: pdd does not interpolate "
+                         "vertex attributes");
+    if (key == "triangles" || key == "triangle_max_area" || key == "triangle_attributes")
+      throw bad_argument("'" + key +
+                         "': refining a previous mesh (Triangle's -r) is not "
+                         "supported");
+    if (!known.count(key)) throw bad_argument("unknown key '" + key + "' in the input dict");
+  }
+  if (!tri.contains("vertices")) throw bad_argument("the input dict needs 'vertices'");
+  pslg g;
+  g.vertices = points_of(tri["vertices"], "vertices");
+  g.vertex_markers = tri.contains("vertex_markers")
+                         ? markers_of(tri["vertex_markers"], g.vertices.size(), "vertex_markers")
+                         : std::vector<int>(g.vertices.size(), 0);
+  if (tri.contains("segments"))
+    add_segments(g, tri["segments"],
+                 tri.contains("segment_markers") ? py::handle(tri["segment_markers"])
+                                                 : py::handle(py::none()));
+  else if (tri.contains("segment_markers"))
+    throw bad_argument("'segment_markers' without 'segments'");
+  if (tri.contains("holes")) g.holes = points_of(tri["holes"], "holes");
+  if (tri.contains("regions")) {
+    const auto r = as_table<double>(tri["regions"], 4, "regions (x, y, attribute, max_area)");
+    for (py::ssize_t i = 0; i < r.shape(0); ++i)
+      g.regions.push_back({{r.at(i, 0), r.at(i, 1)}, r.at(i, 2), r.at(i, 3)});
+  }
+  return g;
+}
+
+/// pdd.triangulate(tri, opts): see the docstring below.
+py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned threads,
+                     std::size_t subdomains) {
+  const triangle::switches sw = triangle::parse_switches(opts);
+  pslg g = pslg_from_dict(tri);
+  auto owner = std::make_unique<mesh_owner>();
+  {
+    py::gil_scoped_release release;
+    triangle::triangulation t = triangle::triangulate(g, sw, {threads, subdomains});
+    owner->mesh = std::move(t.mesh);
+    owner->attributes = std::move(t.triangle_attributes);
+    owner->neighbors = std::move(t.neighbors);
+  }
+  mesh_views v(std::move(owner));
+  py::dict out;
+  const bool markers = !sw.no_boundary_markers;
+  if (!sw.no_node) {
+    out["vertices"] = v.vertices();
+    if (markers) out["vertex_markers"] = v.ints(v.data().mesh.vertex_markers, true);
+  }
+  if (!sw.no_ele) out["triangles"] = v.triangles();
+  if (!sw.no_poly) {
+    out["segments"] = v.segments();
+    if (markers) out["segment_markers"] = v.segment_markers(true);
+  }
+  if (tri.contains("holes")) out["holes"] = tri["holes"];
+  if (tri.contains("regions")) out["regions"] = tri["regions"];
+  if (sw.regional_attributes) out["triangle_attributes"] = v.attributes();
+  if (sw.neighbors) out["neighbors"] = v.neighbors();
+  return out;
+}
+
+/// generate_statistics (and the mesh's quality) as a dict.
+py::dict statistics_dict(const generate_statistics& s, const mesh_statistics& q) {
+  py::dict t("decompose"_a = s.timings.decompose, "decouple"_a = s.timings.decouple,
+             "mesh"_a = s.timings.mesh, "merge"_a = s.timings.merge, "total"_a = s.timings.total);
+  return py::dict(
+      "subdomains"_a = s.subdomains, "threads"_a = s.threads, "triangles"_a = q.triangles,
+      "vertices"_a = q.vertices, "estimated_triangles"_a = s.estimated_triangles, "k"_a = s.k,
+      "split_points"_a = s.split_points, "interface_splits"_a = s.interface_splits,
+      "shielded_triangles"_a = s.shielded_triangles,
+      "monolithic_fallback"_a = s.monolithic_fallback, "min_angle_deg"_a = q.min_angle_deg,
+      "max_angle_deg"_a = q.max_angle_deg, "max_ratio"_a = q.max_ratio, "max_area"_a = q.max_area,
+      "area"_a = q.area, "timings"_a = t);
+}
+
+/// The whole domain meshed by the kernel under a sizing field, small angles shielded first
+/// (as pdd::pipeline::mesh_whole does for a uniform bound).
+template <SizingField S>
+triangle_mesh mesh_with_sizing(const pslg& g, const mesh_criteria& c, const S& sizing,
+                               generate_statistics& st) {
+  const shielded_domain sd = shield(g, c.max_area);
+  mesher_result r = cgal::mesher{}.mesh(sd.domain, c, sizing);
+  if (add_shield_triangles(r, sd.domain, sd.triangles, 0) != 0)
+    throw meshing_error(-1, "the kernel split a shield edge");
+  st.subdomains = 1;
+  st.threads = 1;
+  st.shielded_triangles = sd.triangles.size();
+  st.triangles = r.mesh.triangles.size();
+  return std::move(r.mesh);
+}
+
+/// pdd.mesh(...): see the docstring below.
+py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::handle& holes,
+              double min_angle, const py::handle& max_area, const py::handle& sizing,
+              const py::handle& sizing_bounds, std::size_t subdomains, unsigned threads,
+              const std::string& kernel, const py::handle& vertex_markers,
+              const py::handle& segment_markers) {
+  if (kernel != "cgal")
+    throw bad_argument("kernel '" + kernel + "' is not available (pdd has: 'cgal')");
+  pslg g;
+  g.vertices = points_of(vertices, "vertices");
+  g.vertex_markers = vertex_markers.is_none()
+                         ? std::vector<int>(g.vertices.size(), 0)
+                         : markers_of(vertex_markers, g.vertices.size(), "vertex_markers");
+  add_segments(g, segments, segment_markers);
+  if (!holes.is_none()) g.holes = points_of(holes, "holes");
+  generate_options o;
+  o.criteria.min_angle_deg = min_angle;
+  if (!max_area.is_none()) {
+    o.criteria.max_area = max_area.cast<double>();
+    if (!(o.criteria.max_area > 0.0)) throw bad_argument("max_area must be > 0");
+  }
+  o.subdomains = subdomains;
+  o.threads = threads;
+  const bool callable = !sizing.is_none() && PyCallable_Check(sizing.ptr());
+  if (!sizing.is_none() && subdomains > 1)
+    throw bad_argument("a sizing field meshes the whole domain at once: subdomains must be 0 or "
+                       "1 (the decoupled pipeline takes a uniform max_area)");
+  // The sizing objects are made and destroyed with the GIL held; copies made while
+  // meshing only share the Python function through a shared_ptr.
+  std::optional<callable_sizing> by_callable;
+  std::optional<grid_sizing> by_grid;
+  if (callable)
+    by_callable = callable_sizing{
+        std::make_shared<py::function>(py::reinterpret_borrow<py::function>(sizing))};
+  else if (!sizing.is_none())
+    by_grid = make_grid_sizing(sizing, sizing_bounds, g.vertices);
+  auto owner = std::make_unique<mesh_owner>();
+  generate_statistics st;
+  {
+    py::gil_scoped_release release;
+    validate(g);
+    if (by_callable) {
+      owner->mesh = mesh_with_sizing(g, o.criteria, *by_callable, st);
+    } else if (by_grid) {
+      owner->mesh = mesh_with_sizing(g, o.criteria, *by_grid, st);
+    } else {
+      generate_result r = generate(g, o);
+      owner->mesh = std::move(r.mesh);
+      st = std::move(r.statistics);
+    }
+  }
+  const mesh_statistics q = compute_statistics(owner->mesh);
+  mesh_views v(std::move(owner));
+  return py::dict("vertices"_a = v.vertices(), "triangles"_a = v.triangles(),
+                  "segments"_a = v.segments(), "segment_markers"_a = v.segment_markers(false),
+                  "vertex_markers"_a = v.ints(v.data().mesh.vertex_markers, false),
+                  "triangle_markers"_a = v.ints(v.data().mesh.triangle_markers, false),
+                  "statistics"_a = statistics_dict(st, q));
+}
+
+} // namespace
+} // namespace pdd::python
+
+PYBIND11_MODULE(pdd, m) {
+  using namespace pdd::python;
+  m.doc() = "pdd: parallel guaranteed-quality 2D Delaunay meshing by the decoupling method";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const pdd::input_error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const pdd::geometry_error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const pdd::triangle::switch_error& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const bad_argument& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const pdd::limit_error& e) {
+      PyErr_SetString(PyExc_MemoryError, e.what());
+    } catch (const pdd::error& e) { // meshing, decomposition, internal: not the caller's input
+      PyErr_SetString(PyExc_RuntimeError, e.what());
+    }
+  });
+  m.def("triangulate", &triangulate, "tri"_a, "opts"_a = "", py::kw_only(), "threads"_a = 0,
+        "subdomains"_a = 0,
+        R"(Meshes a PSLG as the `triangle` package's triangulate(tri, opts) does, with pdd.
+
+tri: dict with 'vertices' (n, 2) and optionally 'vertex_markers', 'segments' (m, 2),
+'segment_markers', 'holes' (h, 2), 'regions' (r, 4: x, y, attribute, max_area).
+opts: Triangle switches: p (required), q[angle], a[area], a (regional areas), A, Q, V, N, E,
+P, B, O, z, j, n. Numbering is zero-based (the triangle package's 'z'). Any other switch,
+unknown key, 'vertex_attributes' or 'triangles' raises ValueError.
+Returns a dict: vertices, vertex_markers (n, 1), triangles (t, 3) int32, segments,
+segment_markers, holes and regions (copied), triangle_attributes (with A), neighbors (with n,
+-1 on the boundary). Arrays are views of pdd's mesh (no copy). pdd's keywords: threads (0:
+all cores), subdomains (0: automatic).)");
+  m.def("mesh", &mesh, "vertices"_a, "segments"_a, "holes"_a = py::none(), "min_angle"_a = 20.7,
+        "max_area"_a = py::none(), "sizing"_a = py::none(), "sizing_bounds"_a = py::none(),
+        "subdomains"_a = 0, "threads"_a = 0, "kernel"_a = "cgal", "vertex_markers"_a = py::none(),
+        "segment_markers"_a = py::none(),
+        R"(Meshes the domain enclosed by closed segment loops with guaranteed quality.
+
+vertices (n, 2), segments (m, 2) vertex indices, holes (h, 2) one point in each hole.
+min_angle degrees; max_area a uniform bound; sizing a callable f(x, y) -> area or a 2-D numpy
+grid of areas over sizing_bounds (x0, y0, x1, y1; default: the vertices' bounding box) -- a
+sizing field meshes the whole domain at once (subdomains 0 or 1). subdomains: N of the
+decoupling method (0: automatic); threads (0: all cores): the arrays are bitwise the same for
+every thread count. Returns a dict of numpy arrays (vertices, triangles, segments,
+segment_markers, vertex_markers, triangle_markers = subdomain ids) and 'statistics'.
+Bad input raises ValueError with pdd's message; the GIL is released while meshing.)");
+  m.attr("supported_switches") = std::string(pdd::triangle::supported_switches);
+}

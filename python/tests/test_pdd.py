@@ -1,0 +1,203 @@
+"""pytest tests of the pdd Python module: the triangle package's call, pdd.mesh, errors,
+sizing fields, determinism across thread counts, zero-copy arrays."""
+import os
+import pathlib
+import subprocess
+
+import numpy as np
+import pytest
+
+import pdd
+
+SOURCE = pathlib.Path(os.environ.get("PDD_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
+
+
+def read_poly(name):
+    """A bundled .poly as the triangle package's dict (1-based ids, markers)."""
+    lines = [l.split("#")[0].split() for l in (SOURCE / "examples" / "data" / name).read_text().splitlines()]
+    lines = [l for l in lines if l]
+    nv = int(lines[0][0])
+    v = np.array([[float(x) for x in l[1:3]] for l in lines[1:1 + nv]])
+    ns = int(lines[1 + nv][0])
+    s = np.array([[int(x) - 1 for x in l[1:3]] for l in lines[2 + nv:2 + nv + ns]])
+    nh = int(lines[2 + nv + ns][0])
+    h = np.array([[float(x) for x in l[1:3]] for l in lines[3 + nv + ns:3 + nv + ns + nh]])
+    return dict(vertices=v, segments=s, holes=h.reshape(-1, 2))
+
+
+def square(side=1.0):
+    v = np.array([[0, 0], [side, 0], [side, side], [0, side]], dtype=float)
+    return dict(vertices=v, segments=np.array([[0, 1], [1, 2], [2, 3], [3, 0]]))
+
+
+def areas(v, t):
+    a, b, c = v[t[:, 0]], v[t[:, 1]], v[t[:, 2]]
+    return 0.5 * ((b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0]))
+
+
+def min_angles(v, t):
+    p = v[t]
+    out = []
+    for i in range(3):
+        u = p[:, (i + 1) % 3] - p[:, i]
+        w = p[:, (i + 2) % 3] - p[:, i]
+        cos = (u * w).sum(1) / np.linalg.norm(u, axis=1) / np.linalg.norm(w, axis=1)
+        out.append(np.degrees(np.arccos(np.clip(cos, -1, 1))))
+    return np.min(out, axis=0)
+
+
+def test_triangulate_like_the_triangle_package():
+    key = read_poly("key.poly")
+    out = pdd.triangulate(key, "pq30a0.01")
+    v, t = out["vertices"], out["triangles"]
+    assert v.dtype == np.float64 and v.shape[1] == 2
+    assert t.dtype == np.int32 and t.shape[1] == 3
+    assert out["vertex_markers"].shape == (len(v), 1)
+    assert out["segment_markers"].shape == (len(out["segments"]), 1)
+    # input vertices first, in input order, bit for bit (Triangle's numbering)
+    assert np.array_equal(v[:len(key["vertices"])], key["vertices"])
+    assert t.min() == 0 and t.max() == len(v) - 1  # zero-based, as the triangle package
+    assert (areas(v, t) > 0).all() and areas(v, t).max() <= 0.01
+    assert min_angles(v, t).min() >= 30.0
+    assert np.array_equal(out["holes"], key["holes"])
+    assert "triangle_attributes" not in out and "neighbors" not in out
+    # within 3% of Triangle 1.6's 797 triangles for the same switches
+    assert abs(len(t) - 797) < 0.03 * 797
+
+
+def test_switches_A_n_B_and_suppressed_outputs():
+    tri = square()
+    tri["regions"] = np.array([[0.5, 0.5, 3.0, 0.001]])
+    out = pdd.triangulate(tri, "pqaAn")
+    assert np.all(out["triangle_attributes"] == 3.0)
+    assert out["triangle_attributes"].shape == (len(out["triangles"]), 1)
+    assert areas(out["vertices"], out["triangles"]).max() <= 0.001
+    nb = out["neighbors"]
+    assert nb.shape == out["triangles"].shape and (nb >= -1).all()
+    assert (nb == -1).sum() == len(out["segments"])
+    b = pdd.triangulate(tri, "pqB")
+    assert "vertex_markers" not in b and "segment_markers" not in b
+    none = pdd.triangulate(tri, "pqNEP")
+    assert not {"vertices", "triangles", "segments"} & set(none)
+
+
+@pytest.mark.parametrize("opts, message", [
+    ("pqc", "switch -c"),
+    ("pq30r", "switch -r"),
+    ("a2.6e-7", "switch -e"),
+    ("pa0", "greater than zero"),
+    ("q", "switch -p is required"),
+])
+def test_refused_switches(opts, message):
+    with pytest.raises(ValueError, match=message.replace("-", "\\-")):
+        pdd.triangulate(square(), opts)
+
+
+def test_bad_input_raises_value_error_with_pdd_message():
+    bad = square()
+    bad["segments"] = np.array([[0, 2], [1, 3], [0, 1], [2, 3]])  # crossing diagonals
+    with pytest.raises(ValueError, match="cross|intersect|degree|segment"):
+        pdd.triangulate(bad, "pq")
+    with pytest.raises(ValueError, match="unknown key 'vertexes'"):
+        pdd.triangulate(dict(vertexes=np.zeros((3, 2))), "p")
+    with pytest.raises(ValueError, match="vertex_attributes"):
+        pdd.triangulate(dict(square(), vertex_attributes=np.ones((4, 1))), "p")
+    with pytest.raises(ValueError, match="outside"):
+        pdd.mesh(square()["vertices"], np.array([[0, 1], [1, 7]]))
+    with pytest.raises(ValueError, match="shape"):
+        pdd.mesh(np.zeros((4, 3)), square()["segments"])
+    with pytest.raises(ValueError, match="kernel 'native'"):
+        pdd.mesh(**square(), kernel="native")
+
+
+def test_mesh_round_trip_and_statistics():
+    key = read_poly("key.poly")
+    r = pdd.mesh(key["vertices"], key["segments"], holes=key["holes"], max_area=0.002,
+                 subdomains=4, threads=2)
+    s = r["statistics"]
+    assert s["subdomains"] == 4 and s["triangles"] == len(r["triangles"])
+    assert s["min_angle_deg"] >= 20.7 - 1e-9 and s["max_area"] <= 0.002
+    assert sorted(set(r["triangle_markers"].tolist())) == [0, 1, 2, 3]
+    assert abs(areas(r["vertices"], r["triangles"]).sum() - s["area"]) < 1e-9
+    # the mesh's boundary (its subsegments), fed back as input, meshes again with every
+    # boundary vertex kept first and in order
+    ids, seg = np.unique(r["segments"], return_inverse=True)
+    boundary = dict(vertices=r["vertices"][ids], segments=seg.reshape(-1, 2), holes=key["holes"])
+    again = pdd.triangulate(boundary, "pq")
+    assert np.array_equal(again["vertices"][:len(ids)], boundary["vertices"])
+    assert len(again["segments"]) == len(r["segments"])  # no segment needed a split
+
+
+def test_same_arrays_for_any_thread_count():
+    pipe = read_poly("pipe.poly")
+    runs = [pdd.mesh(pipe["vertices"], pipe["segments"], holes=pipe["holes"], max_area=0.001,
+                     subdomains=16, threads=t) for t in (1, 2, 3)]
+    for r in runs[1:]:
+        for k in ("vertices", "triangles", "segments", "triangle_markers"):
+            assert np.array_equal(r[k], runs[0][k]), k
+            assert r[k].tobytes() == runs[0][k].tobytes(), k
+
+
+def test_sizing_callable_and_grid():
+    calls = []
+
+    def f(x, y):
+        calls.append((x, y))
+        return 1e-4 + 0.01 * x
+
+    sq = square()
+    r = pdd.mesh(sq["vertices"], sq["segments"], sizing=f)
+    v, t = r["vertices"], r["triangles"]
+    c = v[t].mean(axis=1)
+    assert calls and (areas(v, t) <= 1e-4 + 0.01 * c[:, 0] + 1e-15).all()
+    # graded: the left tenth holds many more triangles than the right tenth
+    assert (c[:, 0] < 0.1).sum() > 5 * (c[:, 0] > 0.9).sum()
+    grid = np.array([[1e-4, 1e-2], [1e-4, 1e-2]])  # the same field, bilinear
+    g = pdd.mesh(sq["vertices"], sq["segments"], sizing=grid, sizing_bounds=(0, 0, 1, 1))
+    assert (areas(g["vertices"], g["triangles"]) <= 1e-4 + 0.0099 * g["vertices"][g["triangles"]].mean(1)[:, 0] + 1e-12).all()
+    with pytest.raises(ValueError, match="areas must be > 0"):
+        pdd.mesh(sq["vertices"], sq["segments"], sizing=lambda x, y: -1.0)
+    with pytest.raises(ValueError, match="ZeroDivisionError"):
+        pdd.mesh(sq["vertices"], sq["segments"], sizing=lambda x, y: 1 / 0)
+    with pytest.raises(ValueError, match="subdomains must be 0 or 1"):
+        pdd.mesh(sq["vertices"], sq["segments"], sizing=f, subdomains=4)
+
+
+def test_arrays_are_views_of_one_mesh():
+    r = pdd.mesh(**square(), max_area=0.01)
+    v = r["vertices"]
+    assert not v.flags["OWNDATA"] and v.base is not None
+    seg, mk = r["segments"], r["segment_markers"]
+    assert seg.strides == (12, 4) and mk.strides == (12,)  # views into one edge array
+    del r
+    assert np.isfinite(v).all()  # the capsule keeps the mesh alive
+
+
+def test_import_pdd_as_triangle():
+    import pdd as triangle
+    out = triangle.triangulate(square(), "pq")
+    assert len(out["triangles"]) >= 2
+
+
+def test_meshio_reads_the_arrays():
+    meshio = pytest.importorskip("meshio")
+    out = pdd.triangulate(read_poly("key.poly"), "pq30a0.01A")
+    m = meshio.Mesh(np.column_stack([out["vertices"], np.zeros(len(out["vertices"]))]),
+                    [("triangle", out["triangles"])])
+    assert m.cells_dict["triangle"].shape == out["triangles"].shape
+
+
+@pytest.mark.skipif("PDD_TRIANGLE_EXE" not in os.environ, reason="pdd-triangle not built")
+def test_pdd_triangle_files_match_the_module(tmp_path):
+    src = SOURCE / "examples" / "data" / "key.poly"
+    (tmp_path / "key.poly").write_text(src.read_text())
+    run = subprocess.run([os.environ["PDD_TRIANGLE_EXE"], "-pq30a0.01z", "--threads", "1",
+                          str(tmp_path / "key.poly")], capture_output=True, text=True)
+    assert run.returncode == 0, run.stderr
+    assert "Mesh triangles:" in run.stdout
+    node = np.loadtxt(tmp_path / "key.1.node", skiprows=1)
+    ele = np.loadtxt(tmp_path / "key.1.ele", skiprows=1, dtype=np.int64)
+    out = pdd.triangulate(read_poly("key.poly"), "pq30a0.01", threads=1)
+    assert np.array_equal(node[:, 1:3], out["vertices"])
+    assert np.array_equal(ele[:, 1:4], out["triangles"])
+    assert node[0, 0] == 0 and ele[0, 0] == 0
