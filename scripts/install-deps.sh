@@ -2,7 +2,8 @@
 # Installs the Debian 12 packages pdd needs, when any is missing (as root, or with sudo).
 set -euo pipefail
 packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtbb-dev libmetis-dev
-          libgtest-dev nlohmann-json3-dev libcli11-dev python3-meshio)
+          libgtest-dev nlohmann-json3-dev libcli11-dev python3-meshio
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
