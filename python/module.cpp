@@ -79,6 +79,11 @@ py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned thre
     owner->attributes = std::move(t.triangle_attributes);
     owner->neighbors = std::move(t.neighbors);
   }
+  if (sw.verbose > 0) { // Triangle's library prints its statistics for V; the summary here
+    const mesh_statistics q = compute_statistics(owner->mesh);
+    py::print("pdd.triangulate:", q.vertices, "vertices,", q.triangles, "triangles, angles",
+              q.min_angle_deg, "to", q.max_angle_deg, "degrees, largest area", q.max_area);
+  }
   mesh_views v(std::move(owner));
   py::dict out;
   const bool markers = !sw.no_boundary_markers;
@@ -217,8 +222,8 @@ PYBIND11_MODULE(pdd, m) {
 
 tri: dict with 'vertices' (n, 2) and optionally 'vertex_markers', 'segments' (m, 2),
 'segment_markers', 'holes' (h, 2), 'regions' (r, 4: x, y, attribute, max_area).
-opts: Triangle switches: p (required), q[angle], a[area], a (regional areas), A, Q, V, N, E,
-P, B, O, z, j, n. Numbering is zero-based (the triangle package's 'z'). Any other switch,
+opts: Triangle switches: p (required), q[angle], a[area], a (regional areas), A, Q, V (prints a
+summary), N, E, P, B, O, z, j, n; I is accepted and means nothing without files. Numbering is zero-based (the triangle package's 'z'). Any other switch,
 unknown key, 'vertex_attributes' or 'triangles' raises ValueError.
 Returns a dict: vertices, vertex_markers (n, 1), triangles (t, 3) int32, segments,
 segment_markers, holes and regions (copied), triangle_attributes (with A), neighbors (with n,

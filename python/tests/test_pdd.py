@@ -66,7 +66,7 @@ def test_triangulate_like_the_triangle_package():
     assert abs(len(t) - 797) < 0.03 * 797
 
 
-def test_switches_A_n_B_and_suppressed_outputs():
+def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
     tri = square()
     tri["regions"] = np.array([[0.5, 0.5, 3.0, 0.001]])
     out = pdd.triangulate(tri, "pqaAn")
@@ -78,8 +78,9 @@ def test_switches_A_n_B_and_suppressed_outputs():
     assert (nb == -1).sum() == len(out["segments"])
     b = pdd.triangulate(tri, "pqB")
     assert "vertex_markers" not in b and "segment_markers" not in b
-    none = pdd.triangulate(tri, "pqNEP")
+    none = pdd.triangulate(tri, "pqNEPV")
     assert not {"vertices", "triangles", "segments"} & set(none)
+    assert "pdd.triangulate:" in capsys.readouterr().out  # V prints a summary
 
 
 @pytest.mark.parametrize("opts, message", [

@@ -145,6 +145,33 @@ inline generate_options options_for(const switches& sw, const triangulate_option
   return g;
 }
 
+/// Meshes a domain with regions for switches A and a alone: one run when every component has
+/// the same area bound, else one run per component; the regional attribute of every triangle
+/// (switch A) from the component it lies in.
+inline void mesh_regions(const pslg& domain, const switches& sw, const generate_options& gopt,
+                         triangulation& out) {
+  const loop_structure ls = find_loops(domain);
+  const auto comps = domain_components(ls);
+  std::vector<double> areas(comps.size(), gopt.criteria.max_area);
+  if (sw.regional_areas) areas = component_areas(domain, ls, comps, gopt.criteria.max_area);
+  std::vector<std::size_t> component;
+  if (std::adjacent_find(areas.begin(), areas.end(), std::not_equal_to<>()) != areas.end()) {
+    out.mesh = mesh_components(domain, ls, comps, areas, gopt, component, out.runs);
+  } else {
+    generate_options one = gopt;
+    one.criteria.max_area = areas.empty() ? gopt.criteria.max_area : areas.front();
+    generate_result r = generate(domain, one);
+    out.mesh = std::move(r.mesh);
+    out.runs.push_back(std::move(r.statistics));
+    if (sw.regional_attributes) component = triangle_components(domain, ls, comps, out.mesh);
+  }
+  if (!sw.regional_attributes) return;
+  const std::vector<double> attribute = component_attributes(domain, ls, comps);
+  out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
+  for (std::size_t t = 0; t < component.size(); ++t)
+    if (component[t] != no_component) out.triangle_attributes[t] = attribute[component[t]];
+}
+
 } // namespace detail
 
 /// Meshes `domain` as `triangle -<sw>` would mesh it, with pdd's pipeline.
@@ -176,36 +203,13 @@ inline triangulation triangulate(pslg domain, const switches& sw,
   validate(domain);
   const generate_options gopt = detail::options_for(sw, o);
   triangulation out;
-  const bool regions = !domain.regions.empty() && (sw.regional_areas || sw.regional_attributes);
-  std::vector<std::size_t> component;
-  std::vector<double> attribute(1, 0.0);
-  if (regions) {
-    const loop_structure ls = find_loops(domain);
-    const auto comps = detail::domain_components(ls);
-    attribute = detail::component_attributes(domain, ls, comps);
-    std::vector<double> areas(comps.size(), gopt.criteria.max_area);
-    if (sw.regional_areas)
-      areas = detail::component_areas(domain, ls, comps, gopt.criteria.max_area);
-    if (std::adjacent_find(areas.begin(), areas.end(), std::not_equal_to<>()) != areas.end()) {
-      out.mesh = detail::mesh_components(domain, ls, comps, areas, gopt, component, out.runs);
-    } else {
-      generate_options one = gopt;
-      one.criteria.max_area = areas.empty() ? gopt.criteria.max_area : areas.front();
-      generate_result r = generate(domain, one);
-      out.mesh = std::move(r.mesh);
-      out.runs.push_back(std::move(r.statistics));
-      component = detail::triangle_components(domain, ls, comps, out.mesh);
-    }
+  if (!domain.regions.empty() && (sw.regional_areas || sw.regional_attributes)) {
+    detail::mesh_regions(domain, sw, gopt, out);
   } else {
     generate_result r = generate(domain, gopt);
     out.mesh = std::move(r.mesh);
     out.runs.push_back(std::move(r.statistics));
-  }
-  if (sw.regional_attributes) {
-    out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
-    for (std::size_t t = 0; t < component.size(); ++t)
-      if (component[t] != detail::no_component)
-        out.triangle_attributes[t] = attribute[component[t]];
+    if (sw.regional_attributes) out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
   }
   detail::input_vertices_first(out.mesh, domain);
   if (sw.jettison) out.jettisoned_vertices = detail::jettison_unused_vertices(out.mesh);
