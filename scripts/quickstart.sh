@@ -9,6 +9,7 @@ cmake -S . -B build/quickstart -G Ninja -DCMAKE_BUILD_TYPE=Release -DPDD_BUILD_T
 cmake --build build/quickstart --target pdd-mesh -j "$(nproc)"
 mkdir -p out
 build/quickstart/examples/drivers/pdd-mesh examples/data/pipe.poly --max-area 2e-5 --verify \
-  -o out/pipe.vtu --stats out/pipe.json --svg out/pipe.svg "$@"
-echo "quickstart: mesh in $PWD/out/pipe.vtu (open with ParaView), statistics in $PWD/out/pipe.json," \
-     "picture in $PWD/out/pipe.svg"
+  -o out/pipe.vtu --stats out/pipe.json --svg out/pipe.svg --svg-histogram out/pipe_angles.svg "$@"
+echo "quickstart: mesh in $PWD/out/pipe.vtu (open with ParaView), statistics in $PWD/out/pipe.json,"
+echo "quickstart: pictures in $PWD/out/pipe.svg (subdomains, separators, a zoomed inset of the" \
+     "triangles) and $PWD/out/pipe_angles.svg (angle histogram)"

@@ -3,7 +3,8 @@
 //
 //   pdd-mesh INPUT.poly [-o OUT.{vtu,node,msh,svg}] [--min-angle DEG] [--max-area A]
 //            [--subdomains N] [--threads T] [--output-per-subdomain DIR] [--verify]
-//            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg] [--quiet]
+//            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg]
+//            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
 //
 // Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error (among them
 // a triangle outside the shielded corners that violates the angle or area bound: every mesh is
@@ -13,6 +14,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/properties.hpp>
+#include <pdd/io/angle_histogram.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/io/svg.hpp>
@@ -45,7 +47,8 @@ namespace {
 using namespace pdd::drivers; // exit codes
 
 struct cli_options {
-  std::string input, output, per_subdomain_dir, stats, svg;
+  std::string input, output, per_subdomain_dir, stats, svg, svg_histogram;
+  std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
   double min_angle = pdd::mesh_criteria{}.min_angle_deg;
   double max_area = std::numeric_limits<double>::infinity();
   std::size_t subdomains = 0;
@@ -284,6 +287,8 @@ void print_summary(const cli_options& o, const mesh_run& r) {
     std::printf("pdd-mesh: wrote %s/mesh.pvtu and %zu subdomain files\n",
                 o.per_subdomain_dir.c_str(), r.gs.subdomains);
   if (r.mesh && !o.svg.empty()) std::printf("pdd-mesh: wrote %s\n", o.svg.c_str());
+  if (r.mesh && !o.svg_histogram.empty())
+    std::printf("pdd-mesh: wrote %s\n", o.svg_histogram.c_str());
   if (!o.stats.empty()) std::printf("pdd-mesh: wrote %s\n", o.stats.c_str());
 }
 
@@ -301,7 +306,14 @@ int run(const cli_options& o) {
   bar.stage("writing");
   const auto t_write0 = std::chrono::steady_clock::now();
   if (r.mesh && !o.output.empty()) pdd::write_mesh(o.output, *r.mesh);
-  if (r.mesh && !o.svg.empty()) pdd::write_svg(o.svg, *r.mesh);
+  if (r.mesh && !o.svg.empty()) {
+    pdd::svg_options so;
+    if (!o.svg_window.empty())
+      so.window =
+          pdd::svg_window{o.svg_window[0], o.svg_window[1], o.svg_window[2], o.svg_window[3]};
+    pdd::write_svg(o.svg, *r.mesh, so);
+  }
+  if (r.mesh && !o.svg_histogram.empty()) pdd::write_angle_histogram_svg(o.svg_histogram, *r.mesh);
   r.t_write = pdd::seconds_since(t_write0);
   r.t_total = pdd::seconds_since(t_start) - r.t_monolithic;
   bar.clear();
@@ -346,8 +358,16 @@ int main(int argc, char** argv) {
                "also mesh the whole domain monolithically and report over_refinement_pct");
   app.add_option("--stats", o.stats, "write statistics as JSON to this file");
   auto* svg = app.add_option("--svg", o.svg, "draw the mesh to this SVG file");
+  auto* win = app.add_option("--svg-window", o.svg_window,
+                             "the --svg picture's zoomed inset: x0,y0,x1,y1 (default: automatic "
+                             "for meshes too large to draw every triangle)")
+                  ->delimiter(',')
+                  ->expected(4)
+                  ->needs(svg);
+  auto* hist = app.add_option("--svg-histogram", o.svg_histogram,
+                              "draw the histogram of the triangle angles to this SVG file");
   auto* out = app.get_option("--output");
-  per->excludes(ver)->excludes(svg)->excludes(out);
+  per->excludes(ver)->excludes(svg)->excludes(out)->excludes(win)->excludes(hist);
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   try {
     app.parse(argc, argv);

@@ -77,6 +77,7 @@
 #include <pdd/decoupling/invariance.hpp>
 
 // level 6: io, meshing
+#include <pdd/io/angle_histogram.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/decomposition_io.hpp>
 #include <pdd/io/msh.hpp>

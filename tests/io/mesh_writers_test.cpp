@@ -324,9 +324,16 @@ TEST(Svg, PslgMeshAndHugeMesh) {
   small.max_triangles = 4;
   pdd::write_svg(dir / "huge.svg", m, small);
   const std::string hs = pdd::test::read_text(dir / "huge.svg");
-  EXPECT_NE(hs.find("only its boundary segments are drawn"), std::string::npos);
-  EXPECT_EQ(hs.find("#555555"), std::string::npos);
-  EXPECT_EQ(hs.find("stroke=\"none\""), std::string::npos);
+  EXPECT_NE(hs.find("its subdomains are drawn filled"), std::string::npos);
+  // each subdomain is one filled outline: the unit squares' 4 boundary edges each
+  EXPECT_EQ(count_of(hs, "fill-rule=\"nonzero\""), 2u);
+  EXPECT_EQ(count_of(path_data(hs, "fill-rule=\"nonzero\""), "L"), 4u);
+  // the separator (edge 1-4), on the picture and in the automatic inset
+  EXPECT_EQ(count_of(hs, "stroke=\"#000000\""), 2u);
+  EXPECT_NE(hs.find("clip-path=\"url(#pdd-inset)\""), std::string::npos);
+  EXPECT_NE(hs.find("inset: x "), std::string::npos);
+  EXPECT_NE(hs.find("8 triangles, 8 vertices"), std::string::npos); // the legend
+  EXPECT_NE(hs.find("2 subdomain(s)"), std::string::npos);
 
   if (pdd::test::python_has("xml.etree.ElementTree")) {
     std::string log;

@@ -9,6 +9,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/io/atomic_file.hpp>
+#include <pdd/io/detail/mesh_picture.hpp>
 #include <pdd/io/svg_options.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/core/triangle_mesh.hpp>
@@ -59,12 +60,14 @@ inline void draw_pslg(svg_canvas& c, const pslg& g, const svg_options& o) {
 }
 
 /// Draws the mesh: triangles filled by marker when there are several markers, every edge once
-/// (thin), then the boundary segments by marker; above max_triangles only the segments.
+/// (thin), then the boundary segments by marker; above max_triangles the subdomains filled and
+/// the separators instead of the triangles.
 inline void draw_mesh(svg_canvas& c, const triangle_mesh& m, const svg_options& o) {
   if (m.triangles.size() > o.max_triangles) {
     c.comment("the mesh has " + std::to_string(m.triangles.size()) +
               " triangles, more than max_triangles = " + std::to_string(o.max_triangles) +
-              ": only its boundary segments are drawn");
+              ": its subdomains are drawn filled, with the separators, not its triangles");
+    draw_subdomains(c, m, classify_edges(m), o);
   } else {
     std::map<int, std::vector<std::size_t>> by_marker;
     for (std::size_t t = 0; t < m.triangles.size(); ++t)
@@ -148,24 +151,45 @@ inline void write_svg(const std::filesystem::path& path, const pslg& g,
   });
 }
 
-/// Writes an SVG picture of a mesh, atomically: triangles filled by marker (subdomain) when
-/// there are several, mesh edges thin, boundary segments coloured by marker. A mesh with more
-/// than options.max_triangles triangles is drawn as its boundary segments only, and an SVG
-/// comment says so (the full picture would be enormous).
-/// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
+/// Writes an SVG picture of a mesh of any size, atomically: each subdomain (triangle marker)
+/// filled in its own colour, the separators between subdomains in black, the boundary
+/// segments coloured by marker, and the triangles (thin edges) when there are at most
+/// options.max_triangles of them. A larger mesh, or any mesh given options.window, gets a
+/// zoomed inset below the picture showing the triangles of the window (automatic for a large
+/// mesh: about options.inset_triangles triangles on the separator nearest the centre), marked
+/// by a red frame on the picture. options.legend adds the triangle, vertex and subdomain
+/// counts and the smallest angle.
+/// \throws pdd::error naming the path for an inconsistent mesh, an empty window or a failed
+///   write.
 /// Complexity: O(t log t). Thread-safety: reentrant.
 inline void write_svg(const std::filesystem::path& path, const triangle_mesh& mesh,
                       const svg_options& options = {}) {
   detail::check_mesh_for_writing(mesh, path);
+  if (options.window &&
+      !(options.window->x0 < options.window->x1 && options.window->y0 < options.window->y1))
+    throw error("cannot write '" + path.string() + "': the window needs x0 < x1 and y0 < y1");
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
     detail::bbox box;
     for (const point& p : mesh.vertices)
       box.add(p);
+    const bool large = mesh.triangles.size() > options.max_triangles;
+    const detail::marked_edges edges = detail::classify_edges(mesh);
+    std::optional<svg_window> w = options.window;
+    if (!w && large) w = detail::automatic_window(mesh, edges, box, options);
     detail::svg_canvas c(out, box, options);
+    std::optional<detail::svg_canvas> inset;
+    if (w) inset.emplace(out, detail::bbox{w->x0, w->y0, w->x1, w->y1}, options);
     c.open("pdd mesh: " + std::to_string(mesh.vertices.size()) + " vertices, " +
-           std::to_string(mesh.triangles.size()) + " triangles");
+               std::to_string(mesh.triangles.size()) + " triangles",
+           inset ? inset->height() : 0.0);
     detail::draw_mesh(c, mesh, options);
+    if (!large)
+      c.segments(detail::separator_segments(mesh, edges), "#000000", options.segment_stroke_px);
+    if (w) detail::draw_inset(out, c, *inset, mesh, edges, *w, options);
+    if (options.legend)
+      detail::legend_box(out, options.margin_px + 4, options.margin_px + 4,
+                         detail::legend_lines(mesh));
     c.close();
     out.flush();
   });

@@ -47,12 +47,14 @@ public:
   }
   double height() const noexcept { return height_; }
 
-  void open(const std::string& comment) {
+  /// Writes the SVG header; `extra_height` px are added below this canvas (an inset).
+  void open(const std::string& comment, double extra_height = 0.0) {
+    const double h = height_ + extra_height;
     out_.put("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     out_.put("<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"");
-    out_.fixed(width_, o_.precision).put("\" height=\"").fixed(height_, o_.precision);
+    out_.fixed(width_, o_.precision).put("\" height=\"").fixed(h, o_.precision);
     out_.put("\" viewBox=\"0 0 ").fixed(width_, o_.precision).put(' ');
-    out_.fixed(height_, o_.precision).put("\">\n<!-- ").put(comment).put(" -->\n");
+    out_.fixed(h, o_.precision).put("\">\n<!-- ").put(comment).put(" -->\n");
     out_.put("<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n");
   }
   void close() { out_.put("</svg>\n"); }
