@@ -264,3 +264,21 @@ TEST(DecompositionFormat, MalformedFilesNameTheLine) {
         "loop 3\n0 e 0 1\n1 q 1 1\n2 e 2 1\n",
         "bad.pdd:10:");
 }
+
+TEST(PddMesh, SvgWindowAndAngleHistogram) {
+  const auto svg = pdd::test::temp_path("w.svg"), hist = pdd::test::temp_path("h.svg");
+  const auto r =
+      run(PDD_MESH_EXE, key_poly + " --max-area 0.002 --subdomains 4 --svg " + svg.string() +
+                            " --svg-window 0.2,-0.2,0.6,0.2" + " --svg-histogram " + hist.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  std::ifstream s(svg), h(hist);
+  const std::string picture{std::istreambuf_iterator<char>(s), {}};
+  const std::string histogram{std::istreambuf_iterator<char>(h), {}};
+  EXPECT_NE(picture.find("inset: x 0.2000 to 0.6000, y -0.2000 to 0.2000"), std::string::npos);
+  EXPECT_NE(picture.find("4 subdomain(s)"), std::string::npos);
+  EXPECT_NE(histogram.find("Angles of "), std::string::npos);
+  EXPECT_NE(r.output.find("wrote " + hist.string()), std::string::npos) << r.output;
+  const auto bad = run(PDD_MESH_EXE, key_poly + " --svg " + svg.string() + " --svg-window 1,2,3");
+  EXPECT_EQ(bad.code, 2) << bad.output;
+  EXPECT_NE(bad.output.find("--svg-window"), std::string::npos) << bad.output;
+}
