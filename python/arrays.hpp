@@ -46,6 +46,7 @@ as_table(const py::handle& obj, py::ssize_t cols, const std::string& what) {
 
 /// Rows of an (n, 2) float array as points; every coordinate finite.
 inline std::vector<point> points_of(const py::handle& obj, const std::string& what) {
+  if (py::len(obj) == 0) return {}; // holes=[] as the triangle package accepts it
   const auto a = as_table<double>(obj, 2, what);
   std::vector<point> out(static_cast<std::size_t>(a.shape(0)));
   const double* d = a.data();
@@ -74,6 +75,7 @@ inline std::vector<int> markers_of(const py::handle& obj, std::size_t n, const s
 
 /// Adds (m, 2) segments (vertex indices in [0, n)) with optional markers to g.
 inline void add_segments(pslg& g, const py::handle& segs, const py::handle& markers) {
+  if (py::len(segs) == 0) return;
   const auto a = as_table<long long>(segs, 2, "segments");
   const auto m = static_cast<std::size_t>(a.shape(0));
   const std::vector<int> mk =

@@ -133,14 +133,10 @@ triangle_mesh mesh_with_sizing(const pslg& g, const mesh_criteria& c, const S& s
   return std::move(r.mesh);
 }
 
-/// pdd.mesh(...): see the docstring below.
-py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::handle& holes,
-              double min_angle, const py::handle& max_area, const py::handle& sizing,
-              const py::handle& sizing_bounds, std::size_t subdomains, unsigned threads,
-              const std::string& kernel, const py::handle& vertex_markers,
-              const py::handle& segment_markers) {
-  if (kernel != "cgal")
-    throw bad_argument("kernel '" + kernel + "' is not available (pdd has: 'cgal')");
+/// The PSLG of pdd.mesh's arrays.
+pslg pslg_from_arrays(const py::handle& vertices, const py::handle& segments,
+                      const py::handle& holes, const py::handle& vertex_markers,
+                      const py::handle& segment_markers) {
   pslg g;
   g.vertices = points_of(vertices, "vertices");
   g.vertex_markers = vertex_markers.is_none()
@@ -148,6 +144,12 @@ py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::
                          : markers_of(vertex_markers, g.vertices.size(), "vertex_markers");
   add_segments(g, segments, segment_markers);
   if (!holes.is_none()) g.holes = points_of(holes, "holes");
+  return g;
+}
+
+/// pdd.mesh's keywords as generate options.
+generate_options options_from(double min_angle, const py::handle& max_area, std::size_t subdomains,
+                              unsigned threads) {
   generate_options o;
   o.criteria.min_angle_deg = min_angle;
   if (!max_area.is_none()) {
@@ -156,6 +158,19 @@ py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::
   }
   o.subdomains = subdomains;
   o.threads = threads;
+  return o;
+}
+
+/// pdd.mesh(...): see the docstring below.
+py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::handle& holes,
+              double min_angle, const py::handle& max_area, const py::handle& sizing,
+              const py::handle& sizing_bounds, std::size_t subdomains, unsigned threads,
+              const std::string& kernel, const py::handle& vertex_markers,
+              const py::handle& segment_markers) {
+  if (kernel != "cgal")
+    throw bad_argument("kernel '" + kernel + "' is not available (pdd has: 'cgal')");
+  const pslg g = pslg_from_arrays(vertices, segments, holes, vertex_markers, segment_markers);
+  const generate_options o = options_from(min_angle, max_area, subdomains, threads);
   const bool callable = !sizing.is_none() && PyCallable_Check(sizing.ptr());
   if (!sizing.is_none() && subdomains > 1)
     throw bad_argument("a sizing field meshes the whole domain at once: subdomains must be 0 or "

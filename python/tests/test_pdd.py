@@ -108,6 +108,8 @@ def test_bad_input_raises_value_error_with_pdd_message():
         pdd.mesh(square()["vertices"], np.array([[0, 1], [1, 7]]))
     with pytest.raises(ValueError, match="shape"):
         pdd.mesh(np.zeros((4, 3)), square()["segments"])
+    with pytest.raises(ValueError, match="holes must have shape"):
+        pdd.triangulate(dict(square(), holes=np.zeros((2, 3))), "p")
     with pytest.raises(ValueError, match="kernel 'native'"):
         pdd.mesh(**square(), kernel="native")
 
@@ -177,8 +179,9 @@ def test_arrays_are_views_of_one_mesh():
 
 def test_import_pdd_as_triangle():
     import pdd as triangle
-    out = triangle.triangulate(square(), "pq")
+    out = triangle.triangulate(dict(square(), holes=[]), "pq")  # lists and empty lists too
     assert len(out["triangles"]) >= 2
+    assert "holes" in out
 
 
 def test_meshio_reads_the_arrays():
