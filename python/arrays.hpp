@@ -3,8 +3,8 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>

@@ -5,7 +5,7 @@
 #include "arrays.hpp"
 
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/geometry/point.hpp>
+#include <pdd/core/point.hpp>
 
 #include <pybind11/pybind11.h>
 

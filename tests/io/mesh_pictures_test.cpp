@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "io_test_util.hpp"
+#include "test_files.hpp"
 
 #include <string>
 

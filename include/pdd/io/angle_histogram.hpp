@@ -5,9 +5,9 @@
 
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/detail/mesh.hpp>
+#include <pdd/io/detail/mesh_picture.hpp>
 #include <pdd/io/detail/text.hpp>
-#include <pdd/mesh/quality.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -30,19 +30,19 @@ inline void histogram_marker(text_sink& out, double x, double top, double bottom
 } // namespace detail
 
 /// Writes an SVG bar chart of the angles of every triangle of `mesh` (3 per triangle, 1-degree
-/// bins from 0 to 180, pdd::compute_statistics), atomically: bar heights relative to the
+/// bins from 0 to 180), atomically: bar heights relative to the
 /// fullest bin, x axis labelled every 30 degrees, dashed lines at the smallest and largest
 /// angle, a title with the triangle count.
 /// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
-/// Complexity O(t), parallel (the statistics). Thread-safety: reentrant.
+/// Complexity O(t). Thread-safety: reentrant.
 inline void write_angle_histogram_svg(const std::filesystem::path& path,
                                       const triangle_mesh& mesh) {
   detail::check_mesh_for_writing(mesh, path);
-  const mesh_statistics q = compute_statistics(mesh);
+  const detail::angle_summary q = detail::summarize_angles(mesh);
   constexpr double left = 60, top = 40, bin = 4, height = 240; // 180 bins x 4 px
   const double bottom = top + height, right = left + 180 * bin;
-  const std::size_t fullest = std::max<std::size_t>(
-      1, *std::max_element(q.angle_histogram.begin(), q.angle_histogram.end()));
+  const std::size_t fullest =
+      std::max<std::size_t>(1, *std::max_element(q.bins.begin(), q.bins.end()));
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
     out.put("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<svg xmlns=\"http://www.w3.org/2000/svg\" "
@@ -52,9 +52,8 @@ inline void write_angle_histogram_svg(const std::filesystem::path& path,
     out.integer(mesh.triangles.size()).put(" triangles (1-degree bins; fullest bin ");
     out.integer(fullest).put(")</text>\n<path fill=\"#1f77b4\" d=\"");
     for (std::size_t b = 0; b < 180; ++b) {
-      if (q.angle_histogram[b] == 0) continue;
-      const double h =
-          height * static_cast<double>(q.angle_histogram[b]) / static_cast<double>(fullest);
+      if (q.bins[b] == 0) continue;
+      const double h = height * static_cast<double>(q.bins[b]) / static_cast<double>(fullest);
       out.put('M').fixed(left + bin * static_cast<double>(b), 2).put(' ').fixed(bottom, 2);
       out.put("h").fixed(bin - 0.5, 2).put("v-").fixed(h, 2).put("h-").fixed(bin - 0.5, 2).put('Z');
     }
@@ -68,10 +67,10 @@ inline void write_angle_histogram_svg(const std::filesystem::path& path,
     out.put("<text x=\"").fixed((left + right) / 2, 1).put("\" y=\"").fixed(bottom + 38, 1);
     out.put("\" text-anchor=\"middle\">angle (degrees)</text>\n");
     std::string lo = "smallest ", hi = "largest ";
-    detail::append_fixed(lo, q.min_angle_deg, 2);
-    detail::append_fixed(hi, q.max_angle_deg, 2);
-    detail::histogram_marker(out, left + bin * q.min_angle_deg, top, bottom, lo, "#d62728");
-    detail::histogram_marker(out, left + bin * q.max_angle_deg, top, bottom, hi, "#d62728");
+    detail::append_fixed(lo, q.min_deg, 2);
+    detail::append_fixed(hi, q.max_deg, 2);
+    detail::histogram_marker(out, left + bin * q.min_deg, top, bottom, lo, "#d62728");
+    detail::histogram_marker(out, left + bin * q.max_deg, top, bottom, hi, "#d62728");
     out.put("</svg>\n");
     out.flush();
   });

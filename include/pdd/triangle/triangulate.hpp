@@ -6,9 +6,9 @@
 
 #include <pdd/generate.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/geometry/pslg.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/validate.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/triangle/detail/components.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/switches.hpp>

@@ -4,12 +4,13 @@
 /// and the legend.
 #pragma once
 
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/io/detail/svg.hpp>
 #include <pdd/io/svg_options.hpp>
-#include <pdd/mesh/quality.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <map>
@@ -175,14 +176,33 @@ inline std::vector<std::pair<point, point>> separator_segments(const triangle_me
   return seps;
 }
 
+/// The angles of a mesh: extremes and 1-degree bins (core/triangle_measures.hpp's angles,
+/// the values pdd::compute_statistics reports).
+struct angle_summary {
+  double min_deg = 0.0, max_deg = 0.0;
+  std::array<std::size_t, 180> bins{};
+};
+inline angle_summary summarize_angles(const triangle_mesh& m) {
+  angle_summary a;
+  a.min_deg = m.triangles.empty() ? 0.0 : 180.0;
+  for (const auto& t : m.triangles)
+    for (const double d :
+         triangle_angles_deg(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]])) {
+      a.min_deg = std::min(a.min_deg, d);
+      a.max_deg = std::max(a.max_deg, d);
+      ++a.bins[std::min<std::size_t>(179, static_cast<std::size_t>(std::max(0.0, d)))];
+    }
+  return a;
+}
+
 /// The legend lines: triangles and vertices, subdomains, smallest angle.
 inline std::vector<std::string> legend_lines(const triangle_mesh& m) {
-  const mesh_statistics q = compute_statistics(m);
+  const angle_summary q = summarize_angles(m);
   std::map<int, char> markers;
   for (const int k : m.triangle_markers)
     markers.emplace(k, 0);
   std::string angle;
-  append_fixed(angle, q.min_angle_deg, 2);
+  append_fixed(angle, q.min_deg, 2);
   return {std::to_string(m.triangles.size()) + " triangles, " + std::to_string(m.vertices.size()) +
               " vertices",
           std::to_string(std::max<std::size_t>(1, markers.size())) + " subdomain(s)",

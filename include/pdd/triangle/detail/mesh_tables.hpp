@@ -5,8 +5,8 @@
 #pragma once
 
 #include <pdd/errors.hpp>
-#include <pdd/geometry/pslg.hpp>
-#include <pdd/mesh/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 
 #include <array>
 #include <bit>
