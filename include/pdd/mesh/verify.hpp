@@ -157,10 +157,11 @@ inline verify_impl::vertex_lookup report_duplicates(const triangle_mesh& m, viol
   verify_impl::vertex_lookup lookup;
   lookup.reserve(m.vertices.size());
   for (std::size_t v = 0; v < m.vertices.size(); ++v) {
-    const auto [it, inserted] = lookup.emplace(m.vertices[v], static_cast<index_t>(v));
-    if (!inserted)
+    const auto inserted = lookup.emplace(m.vertices[v], static_cast<index_t>(v));
+    if (!inserted.second)
       sink.add(sink.r.duplicate_vertices, [&] {
-        return "vertex " + std::to_string(v) + " duplicates vertex " + std::to_string(it->second) +
+        const index_t first = inserted.first->second;
+        return "vertex " + std::to_string(v) + " duplicates vertex " + std::to_string(first) +
                " at " + verify_impl::str(m.vertices[v]);
       });
   }

@@ -213,7 +213,8 @@ inline decomposition assemble_decomposition(const std::vector<madd_region>& regi
   }
   // Chain each pair's edges into polylines from their smaller end.
   std::map<std::pair<index_t, index_t>, index_t> edge_interface;
-  for (auto& [st, edges] : pair_edges) {
+  for (const auto& [sides, edges] : pair_edges) {
+    const std::pair<index_t, index_t> st = sides; // Clang < 16: no capture of a binding
     std::map<index_t, std::vector<index_t>> adj;
     for (const auto& [a, b] : edges) {
       adj[a].push_back(b);
