@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <set>
@@ -129,11 +130,49 @@ TEST(DecouplingParameter, Formula) {
   EXPECT_NEAR(pdd::decoupling_area_term(c), 0.5 * std::sqrt(0.02 / c.ratio_bound()), 1e-15);
   c.min_angle_deg = 30.0;
   EXPECT_NEAR(pdd::decoupling_area_term(c), area_term, 1e-15);
-  // Lemma 14: a triangle of area > A with ratio <= sqrt 2 has all edges > sqrt(A / sqrt 2);
-  // check on an equilateral-ish and a skinny admissible triangle.
-  const double A = 0.02, l = std::sqrt(A / std::sqrt(2.0));
-  const double eq_side = std::sqrt(4 * A / std::sqrt(3.0)) * 1.0001; // area just above A
-  EXPECT_GT(eq_side, l);
+}
+
+/// Shortest edge and circumradius-to-shortest-edge ratio of triangle abc, scaled to area A.
+struct scaled_triangle {
+  double shortest = 0.0, ratio = 0.0;
+};
+scaled_triangle scale_to_area(point a, point b, point c, double area) {
+  const double ab = dist(a, b), bc = dist(b, c), ca = dist(c, a);
+  const double twice = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  const double l = std::min({ab, bc, ca}), r = ab * bc * ca / (2.0 * twice);
+  return {l * std::sqrt(2.0 * area / twice), r / l};
+}
+
+TEST(DecouplingParameter, Lemma14AreaTermBoundsTheShortestEdge) {
+  // Lemma 14: a triangle of area > A and ratio <= B has its shortest edge l > sqrt(A / B), so an
+  // area split never makes an edge shorter than the area term (1/2) sqrt(A / max(B, sqrt 2)).
+  // Random triangles and the extremal ones (isosceles, ratio exactly B, apex opposite the short
+  // edge), each scaled to area just above A; the bound must hold, and the extremal triangle must
+  // come as close as geometry says (for B >= sqrt 2 its l is sqrt(A / B) times 1.004-1.017).
+  std::mt19937_64 rng(14);
+  std::uniform_real_distribution<double> x(-4.0, 5.0), y(1e-3, 8.0);
+  const double A = 0.02, above = 1.0 + 1e-9;
+  for (const double angle : {5.0, 10.0, 15.0, 20.7, 25.0, 30.0}) {
+    pdd::mesh_criteria c;
+    c.min_angle_deg = angle;
+    c.max_area = A;
+    const double bound = 2.0 * pdd::decoupling_area_term(c), b = c.ratio_bound();
+    double tightest = std::numeric_limits<double>::infinity();
+    const auto check = [&](point p, point q, point r) {
+      const scaled_triangle t = scale_to_area(p, q, r, A * above);
+      if (t.ratio > b) return;
+      ASSERT_GT(t.shortest, bound) << angle << " deg: ratio " << t.ratio;
+      tightest = std::min(tightest, t.shortest / bound);
+    };
+    for (int i = 0; i < 100000; ++i)
+      check({0, 0}, {1, 0}, {x(rng), y(rng)});
+    const double radius = b * (1.0 - 1e-12); // base 1: the apex on the circumcircle, far side
+    check({0, 0}, {1, 0}, {0.5, radius + std::sqrt(radius * radius - 0.25)});
+    // The extremal triangle has area l^2 (B + sqrt(B^2 - 1/4)) / 2 and is the closest of all.
+    const double extremal =
+        std::sqrt(std::max(b, std::numbers::sqrt2) / ((b + std::sqrt(b * b - 0.25)) / 2.0));
+    EXPECT_NEAR(tightest, extremal, 1e-6) << angle << " deg: the area term is not Lemma 14's";
+  }
 }
 
 TEST(Decouple, GridDecompositionK) {

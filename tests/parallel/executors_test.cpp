@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <mutex>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 namespace {
@@ -21,7 +23,6 @@ struct job_failure : std::runtime_error {
   explicit job_failure(index_t i) : std::runtime_error("job failure"), job(i) {}
   index_t job;
 };
-
 
 template <class E>
 void check_executor(const E& ex) {
@@ -82,15 +83,33 @@ TEST(Executors, TbbTwoAndFourThreads) {
   check_executor(pdd::tbb_executor{4});
   EXPECT_GE(pdd::tbb_executor{}.concurrency(), 1u);
 }
-TEST(Executors, TbbRunsConcurrently) {
-  // With 2 threads, two jobs that wait for each other both finish.
-  std::atomic<int> arrived{0};
-  pdd::tbb_executor{2}.run(std::vector<double>{1, 1}, [&](index_t) {
-    ++arrived;
-    for (int spin = 0; arrived.load() < 2 && spin < 200000000; ++spin) {
-    }
+/// Runs two jobs on `ex`, each of which announces that it started and then waits (up to
+/// `timeout`) for the other to have started too. Returns how many jobs met the other: 2 only
+/// when both ran at once; run one after the other, the first times out before the second
+/// starts (a barrier that sequential execution can never pass).
+template <class Executor>
+int jobs_that_met(const Executor& ex, std::chrono::milliseconds timeout) {
+  std::atomic<int> started{0}, met{0};
+  ex.run(std::vector<double>{1, 1}, [&](index_t) {
+    started.fetch_add(1);
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    while (started.load() < 2 && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::yield();
+    if (started.load() == 2) met.fetch_add(1);
   });
-  EXPECT_EQ(arrived.load(), 2);
+  return met.load();
+}
+
+TEST(Executors, TbbRunsConcurrently) {
+  for (int round = 0; round < 3; ++round)
+    ASSERT_EQ(jobs_that_met(pdd::tbb_executor{2}, std::chrono::seconds(30)), 2)
+        << "round " << round << ": the two jobs did not run at once";
+}
+
+TEST(Executors, ConcurrencyCheckFailsForSequentialJobs) {
+  // The check of TbbRunsConcurrently can fail: jobs run one after the other meet once.
+  EXPECT_EQ(jobs_that_met(pdd::sequential_executor{}, std::chrono::milliseconds(50)), 1);
+  EXPECT_EQ(jobs_that_met(pdd::tbb_executor{1}, std::chrono::milliseconds(50)), 1);
 }
 
 } // namespace
