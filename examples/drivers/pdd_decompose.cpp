@@ -9,7 +9,9 @@
 // would build for that area bound, and reports k, the split points and the shielded triangles
 // (the stats gain k, lfs_min, shortest_separator, split_points, shielded_triangles,
 // estimated_triangles): a cheap look at whether a decoupled run is sensible. pdd-mesh uses
-// MADD's defaults, which do not smooth: add --no-smoothing to plan exactly its path.
+// MADD's defaults, which do not smooth: add --no-smoothing to plan exactly its path. Like
+// pdd-mesh, it then refuses --min-separator-angle below 60 (the decoupling path and the
+// shields need separators at >= 60 deg); a plain decomposition accepts any angle in [1, 89].
 //
 // -o writes the decomposition in pdd's text format (include/pdd/io/decomposition_io.hpp),
 // which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
@@ -166,7 +168,8 @@ int main(int argc, char** argv) {
       ->required()
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
   app.add_option("--min-separator-angle", o.madd.min_separator_angle_deg,
-                 "Phi0: smallest angle a separator may form, degrees (default 60)")
+                 "Phi0: smallest angle a separator may form, degrees (default 60; at least 60 "
+                 "with --max-area)")
       ->check(CLI::Range(1.0, 89.0));
   app.add_option("--algorithm", o.madd.algorithm, "MADD algorithm: 1 (3.4) or 2 (3.5, default)")
       ->check(CLI::IsMember({1, 2}));

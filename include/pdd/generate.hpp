@@ -40,8 +40,9 @@ struct generate_result {
 /// 8.1, pdd::shield / pdd::shield_decomposition): each becomes one shielded triangle of the
 /// mesh, with the input angle as its smallest angle; every other triangle meets the criteria.
 /// \throws pdd::geometry_error (invalid domain), pdd::limit_error (the mesh would not fit in
-/// memory: the message has the estimate), pdd::decomposition_error (MADD), pdd::meshing_error
-/// (kernel, with the subdomain id), pdd::decoupling_error (invariance repairs exhausted).
+/// memory: the message has the estimate), pdd::decomposition_error (MADD; also, up front,
+/// options.madd.min_separator_angle_deg outside [60, 90)), pdd::meshing_error (kernel, with
+/// the subdomain id), pdd::decoupling_error (invariance repairs exhausted).
 /// Complexity: the kernel on every subdomain plus O(mesh size) merging.
 template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitioner,
           Executor E = tbb_executor>

@@ -234,6 +234,19 @@ TEST(PddDecompose, MaxAreaPlansThePathPddMeshBuilds) {
   EXPECT_EQ(run(PDD_DECOMPOSE_EXE, star + " -n 6 --max-area 0").code, 2);
 }
 
+TEST(PddDecompose, MaxAreaRefusesSeparatorAnglesBelowSixty) {
+  // Planning pdd-mesh's path (--max-area) needs Phi0 >= 60; a plain decomposition does not.
+  const auto r =
+      run(PDD_DECOMPOSE_EXE, key_poly + " -n 4 --min-separator-angle 45 --max-area 0.01");
+  EXPECT_EQ(r.code, 1) << r.output;
+  EXPECT_NE(r.output.find("min_separator_angle_deg is 45"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(">= 60 deg"), std::string::npos) << r.output;
+  EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly + " -n 4 --min-separator-angle 45 -q").code, 0);
+  EXPECT_EQ(
+      run(PDD_DECOMPOSE_EXE, key_poly + " -n 4 --min-separator-angle 60 --max-area 0.01 -q").code,
+      0);
+}
+
 TEST(PddDecompose, UsageAndBadInput) {
   EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly).code, 2); // --subdomains is required
   EXPECT_EQ(run(PDD_DECOMPOSE_EXE, key_poly + " -n 4 --algorithm 3").code, 2);

@@ -158,6 +158,39 @@ TEST(Generate, RefusesMeshesThatDoNotFitInMemory) {
   EXPECT_THROW(pdd::generate(d, o), pdd::limit_error);
 }
 
+TEST(Generate, RefusesSeparatorAnglesBelowSixtyUpFront) {
+  // Phi0 < 60 deg would let separators form angles the kernel and the shields cannot handle
+  // (ch. 3-4): refused before any work, for every N, with the reason in the message. A huge
+  // mesh (1e12 triangles) shows that nothing ran: the memory check would refuse it otherwise.
+  const pdd::pslg d = pdd::key_domain();
+  for (const double phi0 : {0.0, 30.0, 45.0, 59.999, 90.0, std::nan("")})
+    for (const std::size_t n : {0u, 1u, 2u, 8u}) {
+      pdd::generate_options o;
+      o.criteria.max_area = pdd::domain_area(d) / 1e12;
+      o.subdomains = n;
+      o.madd.min_separator_angle_deg = phi0;
+      try {
+        pdd::pipeline pl(d, o);
+        FAIL() << "Phi0 " << phi0 << " N " << n << " accepted";
+      } catch (const pdd::decomposition_error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("min_separator_angle_deg"), std::string::npos) << what;
+        EXPECT_NE(what.find(">= 60 deg"), std::string::npos) << what;
+        EXPECT_NE(what.find("Phi0"), std::string::npos) << what;
+      }
+      EXPECT_THROW(pdd::generate(d, o), pdd::decomposition_error) << phi0 << " N " << n;
+    }
+  // 60 and above are accepted, and the mesh is verified.
+  for (const double phi0 : {60.0, 75.0}) {
+    pdd::generate_options o;
+    o.criteria.max_area = 0.01;
+    o.subdomains = 2;
+    o.madd.min_separator_angle_deg = phi0;
+    const auto r = pdd::generate(d, o);
+    expect_verified(r.mesh, d, o.criteria, "Phi0 " + std::to_string(phi0));
+  }
+}
+
 TEST(Generate, AutomaticPlanFallsBackWhenASmallFeatureHoldsKDown) {
   // A unit square with a notch 1e-5 wide: lfs_min = 1e-5 bounds k (eq. 6.1), so the uniform
   // path would put ~1e5 points on every separator. The automatic plan decomposes, sees the

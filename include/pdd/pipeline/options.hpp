@@ -22,7 +22,8 @@ struct generate_options {
   unsigned threads = 0;
   /// MADD options. Its `subdomains` and `threads` are the two fields above: leave them at
   /// their defaults or give the same values (check_generate_options); `max_subdomain_area`
-  /// must stay infinite (the pipeline plans N itself).
+  /// must stay infinite (the pipeline plans N itself); `min_separator_angle_deg` (Phi0) must
+  /// be >= 60.
   madd_options madd;
   /// Multiplies the decoupling parameter k of Theorem 15 (in (0, 1] keeps the guarantee).
   double k_scale = 1.0;
@@ -49,7 +50,11 @@ struct generate_options {
 /// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own
 /// fields, instead of silently overriding it: madd.subdomains and madd.threads must be their
 /// defaults or equal subdomains and threads (when subdomains is 0, automatic, madd.subdomains
-/// must be its default), and madd.max_subdomain_area must be infinite.
+/// must be its default), and madd.max_subdomain_area must be infinite. Also refuses, up front
+/// and for every N, a separator angle bound madd.min_separator_angle_deg (Phi0) outside
+/// [60, 90): the decoupling path (Lemma 9, Theorem 15) and the shields (Algorithm 8.2,
+/// Theorem 24) assume that every subdomain meshes with a Ruppert-type kernel, i.e. that
+/// separators meet the boundary and each other at >= 60 deg (criterion C1, ch. 3-4).
 /// \throws pdd::decomposition_error naming the field. Complexity O(1).
 inline void check_generate_options(const generate_options& o) {
   const madd_options defaults;
@@ -65,6 +70,13 @@ inline void check_generate_options(const generate_options& o) {
   if (o.madd.max_subdomain_area != defaults.max_subdomain_area)
     bad("madd.max_subdomain_area is not used by the pipeline (it plans the number of "
         "subdomains itself; set subdomains instead)");
+  const double phi0 = o.madd.min_separator_angle_deg;
+  if (!(phi0 >= 60.0 && phi0 < 90.0))
+    bad("madd.min_separator_angle_deg is " + std::to_string(phi0) +
+        ", but must lie in [60, 90): the decoupling path (Theorem 15) and the shields of small "
+        "angles (Algorithm 8.2) need separators that meet the boundary and each other at >= 60 "
+        "deg (Phi0 of dissertation ch. 3-4), so that every subdomain meets the input-angle "
+        "condition of the Ruppert-type kernel");
 }
 
 } // namespace pdd
