@@ -1,9 +1,12 @@
 #!/usr/bin/env bash
 # Installs the Debian 12 packages pdd needs, when any is missing (as root, or with sudo).
+# clang (Clang 14) builds the sanitizer, fuzzing and ThreadSanitizer configurations; its
+# sanitizer and libFuzzer runtimes are in libclang-rt-14-dev, which clang only recommends.
 set -euo pipefail
 packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtbb-dev libmetis-dev
           libgtest-dev nlohmann-json3-dev libcli11-dev python3-meshio
-          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib)
+          pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
+          clang libclang-rt-14-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -1,0 +1,108 @@
+// Writes the generated part of the fuzzer's seed corpus: small domains made by pdd's own
+// generators (model domains, the geometry tests' random domains) and a few hand-shaped ones that
+// reach the interesting paths (small input angles that get shielded, holes, thin parts, a
+// regions section). The bundled examples/data files are the other seeds.
+//
+//   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
+#include <pdd/geometry/model_domains.hpp>
+#include <pdd/geometry/pslg.hpp>
+#include <pdd/io/poly.hpp>
+
+#include "random_domains.hpp"
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+pdd::pslg polygon(const std::vector<pdd::point>& outer) {
+  pdd::pslg g;
+  g.add_loop(outer, 1);
+  return g;
+}
+
+/// A star with `spikes` tips at radius 1 and notches at radius `inner` (tip angles < 60 deg).
+pdd::pslg star(int spikes, double inner) {
+  std::vector<pdd::point> p;
+  for (int i = 0; i < 2 * spikes; ++i) {
+    const double r = i % 2 == 0 ? 1.0 : inner, a = i * std::numbers::pi / spikes;
+    p.push_back({r * std::cos(a), r * std::sin(a)});
+  }
+  return polygon(p);
+}
+
+/// A triangle with an angle of `deg` degrees at the origin, legs of length 1.
+pdd::pslg wedge(double deg) {
+  const double a = deg * std::numbers::pi / 180.0;
+  return polygon({{0, 0}, {1, 0}, {std::cos(a), std::sin(a)}});
+}
+
+pdd::pslg square_with_hole() {
+  pdd::pslg g = polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  g.add_loop(std::vector<pdd::point>{{0.4, 0.4}, {0.4, 0.6}, {0.6, 0.6}, {0.6, 0.4}}, 2);
+  g.holes.push_back({0.5, 0.5});
+  return g;
+}
+
+pdd::pslg square_with_region() {
+  pdd::pslg g = polygon({{0, 0}, {2, 0}, {2, 1}, {0, 1}});
+  g.regions.push_back({{0.5, 0.5}, 1.0, 0.01});
+  return g;
+}
+
+/// A comb: `teeth` teeth of width 0.1 and length 0.5 on a base of height 0.2.
+pdd::pslg comb(int teeth) {
+  std::vector<pdd::point> p{{0, 0}, {0.2 * teeth, 0}, {0.2 * teeth, 0.2}};
+  for (int t = teeth - 1; t >= 0; --t) {
+    const double x = 0.2 * t;
+    p.insert(p.end(), {{x + 0.15, 0.7}, {x + 0.05, 0.7}});
+    if (t > 0) p.push_back({x, 0.2});
+  }
+  return polygon(p);
+}
+
+std::vector<std::pair<std::string, pdd::pslg>> seeds() {
+  std::vector<std::pair<std::string, pdd::pslg>> s{
+      {"key", pdd::key_domain()},
+      {"pipe-12-6", pdd::pipe_domain(12, 6)},
+      {"square", polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}})},
+      {"l-shape", polygon({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})},
+      {"thin", polygon({{0, 0}, {1, 0}, {1, 0.02}, {0, 0.02}})},
+      {"square-hole", square_with_hole()},
+      {"square-region", square_with_region()},
+      {"star-5", star(5, 0.4)},
+      {"star-12", star(12, 0.6)},
+      {"wedge-10", wedge(10.0)},
+      {"wedge-45", wedge(45.0)},
+      {"comb-4", comb(4)},
+  };
+  for (const std::uint64_t seed : {1u, 2u, 3u, 4u})
+    s.emplace_back("random-" + std::to_string(seed), pdd::test::random_domain(seed, 1, 0.5).g);
+  return s;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::fprintf(stderr, "usage: pdd_fuzz_seeds DIR\n");
+    return 2;
+  }
+  try {
+    const std::filesystem::path dir = argv[1];
+    std::filesystem::create_directories(dir);
+    for (const auto& [name, g] : seeds())
+      pdd::write_poly(dir / (name + ".poly"), g);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "pdd_fuzz_seeds: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
