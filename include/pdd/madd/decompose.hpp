@@ -6,6 +6,7 @@
 
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
@@ -60,13 +61,16 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
     const std::optional<std::vector<std::size_t>> order = detail::next_round(state, o);
     if (!order) break; // done
     std::vector<detail::madd_split_result> res(order->size());
+    const detail::tsan_fork_join fork_join;
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, order->size(), [&](std::size_t k) {
+        const auto task = fork_join.task();
         detail::madd_split_options sk = so;
         sk.target_length = detail::target_length(state.leaves[(*order)[k]].region, o, global_h);
         res[k] = detail::split_region(state.leaves[(*order)[k]].region, sk, partitioner);
       });
     });
+    fork_join.join();
     ++st.rounds;
     detail::apply_round(state, *order, res, st);
   }

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/sizing/uniform.hpp>
@@ -63,7 +64,9 @@ inline constexpr std::size_t statistics_grain = 4096;
 template <class AreaBound>
 mesh_statistics compute_statistics_impl(const triangle_mesh& m, const AreaBound& bound_at) {
   using range = tbb::blocked_range<std::size_t>;
+  const detail::tsan_fork_join fork_join;
   const auto body = [&](const range& r, statistics_accumulator acc) {
+    const auto task = fork_join.task();
     for (std::size_t t = r.begin(); t != r.end(); ++t) {
       const auto& tri = m.triangles[t];
       const point& a = m.vertices[tri[0]];
@@ -88,10 +91,12 @@ mesh_statistics compute_statistics_impl(const triangle_mesh& m, const AreaBound&
   // floating-point sum of areas is bitwise reproducible.
   const statistics_accumulator acc = tbb::parallel_deterministic_reduce(
       range(0, m.triangles.size(), statistics_grain), statistics_accumulator{}, body,
-      [](statistics_accumulator x, const statistics_accumulator& y) {
+      [&](statistics_accumulator x, const statistics_accumulator& y) {
+        const auto task = fork_join.task();
         x.join(y);
         return x;
       });
+  fork_join.join();
   mesh_statistics s;
   s.triangles = m.triangles.size();
   s.vertices = m.vertices.size();

@@ -8,6 +8,7 @@
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/loops.hpp>
@@ -96,7 +97,9 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
   const std::size_t nv = m.vertices.size();
   std::vector<std::uint8_t> flags(m.triangles.size(), 0);
   const double min_angle = o.criteria.min_angle_deg - 1e-9;
+  const tsan_fork_join fork_join;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flags.size(), 1024), [&](const auto& rg) {
+    const auto task = fork_join.task();
     for (std::size_t t = rg.begin(); t != rg.end(); ++t) {
       const auto& tri = m.triangles[t];
       if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv || tri[0] == tri[1] || tri[1] == tri[2] ||
@@ -119,6 +122,7 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
       flags[t] = f;
     }
   });
+  fork_join.join();
   return flags;
 }
 
@@ -175,7 +179,9 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
   namespace vi = verify_impl;
   const auto& edges = table.edges();
   std::vector<std::uint8_t> flags(edges.size(), 0);
+  const tsan_fork_join fork_join;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 1024), [&](const auto& rg) {
+    const auto task = fork_join.task();
     for (std::size_t k = rg.begin(); k != rg.end(); ++k) {
       const vi::edge_record& e = edges[k];
       if (e.count > 2 || (e.count == 2 && e.forward[0] == e.forward[1])) {
@@ -201,6 +207,7 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
       if (side == CGAL::ON_POSITIVE_SIDE) flags[k] = 2;
     }
   });
+  fork_join.join();
   return flags;
 }
 
@@ -259,9 +266,11 @@ inline void report_edges(const triangle_mesh& m, const verify_impl::edge_table& 
 
 /// Sum of the areas of the well-formed triangles: a deterministic parallel reduction.
 inline double mesh_area(const triangle_mesh& m, const std::vector<std::uint8_t>& flags) {
-  return tbb::parallel_deterministic_reduce(
+  const tsan_fork_join fork_join;
+  const double area = tbb::parallel_deterministic_reduce(
       tbb::blocked_range<std::size_t>(0, m.triangles.size(), 4096), 0.0,
       [&](const auto& rg, double acc) {
+        const auto task = fork_join.task();
         for (std::size_t t = rg.begin(); t != rg.end(); ++t)
           if (!(flags[t] & tri_malformed)) {
             const auto& tri = m.triangles[t];
@@ -270,6 +279,8 @@ inline double mesh_area(const triangle_mesh& m, const std::vector<std::uint8_t>&
         return acc;
       },
       std::plus<double>());
+  fork_join.join();
+  return area;
 }
 
 template <class AreaBound>

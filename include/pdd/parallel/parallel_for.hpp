@@ -3,6 +3,7 @@
 /// work is independent per index and the result does not depend on the schedule.
 #pragma once
 
+#include <pdd/core/thread_sanitizer.hpp>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -21,7 +22,14 @@ void parallel_for_index(std::size_t n, unsigned threads, F&& f) {
     return;
   }
   tbb::task_arena arena(threads == 0 ? tbb::task_arena::automatic : static_cast<int>(threads));
-  arena.execute([&] { tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) { f(i); }); });
+  const tsan_fork_join fork_join;
+  arena.execute([&] {
+    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+      const auto task = fork_join.task();
+      f(i);
+    });
+  });
+  fork_join.join();
 }
 
 } // namespace pdd::detail

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/parallel/detail/jobs.hpp>
 
 #include <tbb/parallel_for.h>
@@ -47,15 +48,18 @@ struct tbb_executor {
       tbb::task_arena arena(static_cast<int>(p));
       std::atomic<std::size_t> next{0};
       const int workers = static_cast<int>(std::min<std::size_t>(p, n));
+      const detail::tsan_fork_join fork_join;
       arena.execute([&] {
         tbb::parallel_for(
             0, workers, 1,
             [&](int) {
+              const auto task = fork_join.task();
               for (std::size_t pos; (pos = next.fetch_add(1, std::memory_order_relaxed)) < n;)
                 errors.guarded(job, order[pos]);
             },
             tbb::simple_partitioner{});
       });
+      fork_join.join();
     }
     errors.rethrow_first();
   }
