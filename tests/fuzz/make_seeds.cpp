@@ -4,8 +4,8 @@
 // regions section). The bundled examples/data files are the other seeds.
 //
 //   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
+#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/model_domains.hpp>
-#include <pdd/geometry/pslg.hpp>
 #include <pdd/io/poly.hpp>
 
 #include "random_domains.hpp"
