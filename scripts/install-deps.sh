@@ -4,7 +4,7 @@
 # sanitizer and libFuzzer runtimes are in libclang-rt-14-dev, which clang only recommends.
 set -euo pipefail
 packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtbb-dev libmetis-dev
-          libgtest-dev nlohmann-json3-dev libcli11-dev python3-meshio
+          libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev python3-meshio
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
           clang libclang-rt-14-dev)
 missing=()

@@ -5,6 +5,7 @@
 //            [--subdomains N] [--threads T] [--output-per-subdomain DIR] [--verify]
 //            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg]
 //            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
+//            [--sizing EXPR] [--background FILE.node] [--area-grid FILE]
 //
 // Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error (among them
 // a triangle outside the shielded corners that violates the angle or area bound: every mesh is
@@ -15,7 +16,9 @@
 #include <pdd/generate.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/angle_histogram.hpp>
+#include <pdd/io/area_grid.hpp>
 #include <pdd/io/atomic_file.hpp>
+#include <pdd/io/background_mesh.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/io/svg.hpp>
 #include <pdd/io/write_mesh.hpp>
@@ -27,6 +30,11 @@
 #include <pdd/mesh/verify.hpp>
 #include <pdd/pipeline/system.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
+#include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/expression.hpp>
+#include <pdd/sizing/min_sizing.hpp>
+#include <pdd/sizing/regional.hpp>
+#include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <CLI/CLI.hpp>
@@ -34,6 +42,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -41,6 +50,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -49,6 +59,7 @@ using namespace pdd::drivers; // exit codes
 struct cli_options {
   std::string input, output, per_subdomain_dir, stats, svg, svg_histogram;
   std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
+  std::string sizing_expression, background_mesh, area_grid; // sizing fields (empty: none)
   double min_angle = pdd::mesh_criteria{}.min_angle_deg;
   double max_area = std::numeric_limits<double>::infinity();
   std::size_t subdomains = 0;
@@ -128,7 +139,10 @@ struct mesh_run {
   pdd::pslg domain;
   pdd::pslg_properties props;
   pdd::generate_options options;
-  pdd::uniform_sizing sizing;
+  /// What the mesh is measured and verified against: min(--max-area, the sizing fields).
+  pdd::min_sizing<pdd::uniform_sizing, pdd::any_sizing> sizing{pdd::uniform_sizing{}, {}};
+  std::string sizing_kind;         ///< names the fields for --stats ("none", "expression", ...)
+  pdd::sizing_bounds sizing_range; ///< the bounds of `sizing` over the domain's bounding box
   std::optional<pdd::triangle_mesh> mesh; ///< absent with --output-per-subdomain
   pdd::generate_statistics gs;
   std::optional<pdd::mesh_statistics> st;
@@ -139,6 +153,42 @@ struct mesh_run {
 
   std::size_t triangles() const { return mesh ? mesh->triangles.size() : gs.triangles; }
 };
+
+/// The names of the fields (and "uniform" for a finite --max-area) for --stats: "none", one
+/// name, or "min(a, b, ...)".
+std::string sizing_kind(const std::vector<pdd::any_sizing>& fields, double max_area) {
+  std::vector<std::string> names;
+  for (const auto& f : fields)
+    names.push_back(f.kind());
+  if (std::isfinite(max_area)) names.emplace_back("uniform");
+  if (names.empty()) return "none";
+  if (names.size() == 1) return names[0];
+  std::string kind = "min(";
+  for (std::size_t i = 0; i < names.size(); ++i)
+    kind += names[i] + (i + 1 < names.size() ? ", " : ")");
+  return kind;
+}
+
+/// The sizing field of the run: the minimum of --sizing, --background, --area-grid and the
+/// .poly's regional areas (each when given); empty when none is. `kind` names it for --stats.
+pdd::any_sizing sizing_field(const cli_options& o, const pdd::pslg& domain, std::string& kind) {
+  std::vector<pdd::any_sizing> fields;
+  if (!o.sizing_expression.empty())
+    fields.emplace_back(pdd::expression_sizing(o.sizing_expression));
+  if (!o.background_mesh.empty()) fields.emplace_back(pdd::read_background_mesh(o.background_mesh));
+  if (!o.area_grid.empty()) fields.emplace_back(pdd::read_area_grid(o.area_grid));
+  for (const pdd::region& reg : domain.regions)
+    if (reg.max_area > 0.0) {
+      fields.emplace_back(pdd::regional_sizing(domain));
+      break;
+    }
+  kind = sizing_kind(fields, o.max_area);
+  if (fields.empty()) return {};
+  pdd::any_sizing combined = fields[0];
+  for (std::size_t i = 1; i < fields.size(); ++i)
+    combined = pdd::min_sizing(combined, fields[i]);
+  return combined;
+}
 
 /// Reads and validates the input and sets up the options. Input angles below 60 deg are
 /// shielded by the pipeline (dissertation 8.1): each becomes one shielded triangle whose
@@ -151,7 +201,9 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.options.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
   r.options.subdomains = o.subdomains;
   r.options.threads = o.threads;
-  r.sizing = pdd::uniform_sizing{o.max_area};
+  r.options.sizing = sizing_field(o, r.domain, r.sizing_kind);
+  r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
+  r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
 }
 
 /// Meshes into a merged mesh, or with --output-per-subdomain into files, measuring each
@@ -246,6 +298,18 @@ void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) 
   }
 }
 
+/// The sizing part of the --stats JSON: the fields, their gradation and the graded path.
+void add_sizing_stats(const mesh_run& r, nlohmann::json& j) {
+  j["sizing"] = r.sizing_kind;
+  // max F / min F over the domain's bounding box (null: no bound somewhere)
+  j["gradation"] = r.sizing_range.hi / r.sizing_range.lo;
+  if (!r.options.sizing || r.gs.subdomains <= 1) return;
+  j["graded_path"] = r.gs.graded_path; // false: the interim uniform path (graded_fallback)
+  if (!r.gs.graded_path) j["graded_fallback"] = r.gs.graded_fallback;
+  j["k_ratio_max"] = r.gs.k_ratio_max;
+  j["subdomain_k"] = r.gs.subdomain_k;
+}
+
 /// The verification, comparison, decomposition and timing part of the --stats JSON.
 void add_run_stats(const mesh_run& r, nlohmann::json& j) {
   j["verified"] = r.report.has_value();
@@ -320,6 +384,7 @@ int run(const cli_options& o) {
   if (!o.stats.empty()) {
     nlohmann::json j;
     add_mesh_stats(o, r, j);
+    add_sizing_stats(r, j);
     add_run_stats(r, j);
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
   }
@@ -344,6 +409,15 @@ int main(int argc, char** argv) {
   app.add_option("--min-angle", o.min_angle, "minimum angle in degrees (default 20.7)")
       ->check(CLI::Range(1.0, 34.0));
   app.add_option("--max-area", o.max_area, "maximum triangle area")->check(CLI::PositiveNumber);
+  app.add_option("--sizing", o.sizing_expression,
+                 "maximum triangle area as an expression of x and y (muParser), e.g. "
+                 "\"1e-4*(1+10*x^2)\"");
+  app.add_option("--background", o.background_mesh,
+                 "background mesh FILE.node (+ FILE.ele): area per vertex as the .node's one "
+                 "attribute, or per triangle in FILE.area")
+      ->check(CLI::ExistingFile);
+  app.add_option("--area-grid", o.area_grid, "structured area grid file (see README)")
+      ->check(CLI::ExistingFile);
   app.add_option("--subdomains", o.subdomains,
                  "number of subdomains (1: monolithic kernel; default: automatic)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));

@@ -59,8 +59,7 @@ public:
 class meshing_error : public error {
 public:
   meshing_error(long long subdomain, const std::string& message)
-      : error(subdomain < 0 ? message
-                            : "subdomain " + std::to_string(subdomain) + ": " + message),
+      : error(subdomain < 0 ? message : "subdomain " + std::to_string(subdomain) + ": " + message),
         subdomain_(subdomain) {}
   long long subdomain() const noexcept { return subdomain_; }
 
@@ -72,6 +71,19 @@ private:
 class limit_error : public error {
 public:
   using error::error;
+};
+
+/// An invalid sizing field: a non-positive or NaN area bound (with the point), an expression
+/// that does not parse (column() > 0 names the 1-based column of the bad token), a field
+/// whose minimum over a region cannot be bounded away from 0.
+class sizing_error : public error {
+public:
+  explicit sizing_error(const std::string& message, std::size_t column = 0)
+      : error(message), column_(column) {}
+  std::size_t column() const noexcept { return column_; }
+
+private:
+  std::size_t column_;
 };
 
 /// A broken internal invariant: a bug in pdd, never bad input.

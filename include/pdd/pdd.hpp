@@ -18,6 +18,7 @@
 #pragma once
 
 // level 0: core, errors
+#include <pdd/core/bbox.hpp>
 #include <pdd/core/index.hpp>
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/mesh_criteria.hpp>
@@ -33,6 +34,7 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
@@ -51,7 +53,15 @@
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/partition/metis.hpp>
 #include <pdd/sizing/analytic.hpp>
+#include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/background_mesh.hpp>
+#include <pdd/sizing/grid.hpp>
+#include <pdd/sizing/inverse_area_integral.hpp>
+#include <pdd/sizing/min_sizing.hpp>
+#include <pdd/sizing/regional.hpp>
+#include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
+// pdd/sizing/expression.hpp (muParser) is not included here: it needs the pdd::expression target
 
 // level 3: madd
 #include <pdd/madd/decompose.hpp>
@@ -73,12 +83,15 @@
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
+#include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/decoupling/invariance.hpp>
 
 // level 6: io, meshing
 #include <pdd/io/angle_histogram.hpp>
+#include <pdd/io/area_grid.hpp>
 #include <pdd/io/atomic_file.hpp>
+#include <pdd/io/background_mesh.hpp>
 #include <pdd/io/decomposition_io.hpp>
 #include <pdd/io/msh.hpp>
 #include <pdd/io/poly.hpp>

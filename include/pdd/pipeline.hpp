@@ -14,8 +14,10 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/properties.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/madd/decompose.hpp>
@@ -27,6 +29,7 @@
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/pipeline/detail/memory_check.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
+#include <pdd/pipeline/detail/sizing_plan.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/planning.hpp>
 #include <pdd/pipeline/statistics.hpp>
@@ -34,6 +37,8 @@
 #include <pdd/shielding/apply_shields.hpp>
 #include <pdd/shielding/shield.hpp>
 #include <pdd/shielding/shield_decomposition.hpp>
+#include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <algorithm>
@@ -75,7 +80,13 @@ public:
     validate(domain_);
     area_ = domain_area(domain_);
     stats_.threads = executor_.concurrency();
-    stats_.estimated_triangles = estimate_triangles(area_, options_.criteria);
+    if (options_.sizing) {
+      sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
+      stats_.estimated_triangles =
+          detail::estimate_graded_triangles(domain_, options_.criteria, options_.sizing);
+    } else {
+      stats_.estimated_triangles = estimate_triangles(area_, options_.criteria);
+    }
     stats_.subdomains = options_.subdomains != 0 ? options_.subdomains
                                                  : automatic_subdomains(stats_.estimated_triangles,
                                                                         stats_.threads, options_);
@@ -127,10 +138,12 @@ public:
       // shielded subdomains D_i' (Theorem 24 (3)).
       std::vector<subdomain_shields> shields;
       if (detail::has_small_angles(decomposition_))
-        shields = shield_decomposition(decomposition_, options_.criteria.max_area, executor_,
+        shields = shield_decomposition(decomposition_, decoupling_criteria().max_area, executor_,
                                        shield_length_cap(unshielded_k()));
-      decoupling_options dopt{options_.criteria, options_.k_override, options_.k_scale};
-      decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
+      if (!(options_.sizing && try_graded_path(shields.empty()))) {
+        decoupling_options dopt{decoupling_criteria(), options_.k_override, options_.k_scale};
+        decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
+      }
       decoupled_decomposition_.shields.resize(shields.size());
       for (std::size_t s = 0; s < shields.size(); ++s)
         decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);
@@ -166,9 +179,9 @@ public:
       timed.consume(0, std::move(m));
       timed.finish();
     } else {
-      meshing_statistics ms =
-          mesh_subdomains(decoupled_decomposition_, {options_.criteria, options_.max_repairs},
-                          mesher_, executor_, timed);
+      meshing_statistics ms = mesh_subdomains(
+          decoupled_decomposition_, {options_.criteria, options_.max_repairs, options_.sizing},
+          mesher_, executor_, timed);
       stats_.triangles = ms.triangles();
       stats_.interface_splits = ms.interface_splits;
       stats_.shield_splits = ms.shield_splits;
@@ -202,11 +215,10 @@ public:
   }
   /// As mesh_whole(); `shielded_triangles` receives the number of shielded triangles.
   triangle_mesh mesh_whole(std::size_t& shielded_triangles) const {
-    const shielded_domain sd = shield(domain_, options_.criteria.max_area);
+    const shielded_domain sd = shield(domain_, decoupling_criteria().max_area);
     shielded_triangles = sd.triangles.size();
-    if (sd.triangles.empty())
-      return mesher_.mesh(domain_, options_.criteria, uniform_sizing{}).mesh;
-    mesher_result r = mesher_.mesh(sd.domain, options_.criteria, uniform_sizing{});
+    if (sd.triangles.empty()) return mesher_.mesh(domain_, options_.criteria, options_.sizing).mesh;
+    mesher_result r = mesher_.mesh(sd.domain, options_.criteria, options_.sizing);
     const std::size_t splits = add_shield_triangles(r, sd.domain, sd.triangles, 0);
     if (splits != 0)
       throw meshing_error(-1, std::to_string(splits) +
@@ -238,12 +250,50 @@ private:
             shortest = std::min(shortest, std::hypot(b.x - a.x, b.y - a.y));
           }
     return options_.k_scale * decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()),
-                                                   shortest, options_.criteria);
+                                                   shortest, decoupling_criteria());
+  }
+
+  /// Builds the graded path into decoupled_decomposition_; false (with the reason in the
+  /// statistics) when relation 7.1 fails, shields are needed, or k is overridden or
+  /// scaled.
+  bool try_graded_path(bool no_shields) {
+    if (!no_shields) {
+      stats_.graded_fallback = "small input angles are shielded (the graded path has no shields)";
+      return false;
+    }
+    if (options_.k_override > 0.0 || options_.k_scale != 1.0) {
+      stats_.graded_fallback = "k_override or k_scale set";
+      return false;
+    }
+    const std::vector<double> lo =
+        detail::subdomain_sizing_minima(decomposition_, options_.sizing, executor_);
+    try {
+      graded_decoupling g = decouple_graded(decomposition_, options_.criteria, lo, executor_);
+      decoupled_decomposition_ = std::move(g.path);
+      stats_.subdomain_k = std::move(g.subdomain_k);
+      stats_.k_ratio_max = g.k_ratio_max;
+      stats_.graded_path = true;
+      return true;
+    } catch (const decoupling_error& e) {
+      stats_.graded_fallback = e.what();
+      return false;
+    }
+  }
+
+  /// The criteria the decoupling path and the shields are built for: max_area lowered to the
+  /// sizing field's minimum over the domain (the interim rule, see generate_options::sizing).
+  mesh_criteria decoupling_criteria() const {
+    mesh_criteria c = options_.criteria;
+    c.max_area = std::min(c.max_area, sizing_min_);
+    return c;
   }
 
   void fall_back_to_whole_domain() {
     stats_.monolithic_fallback = true;
     stats_.subdomains = 1;
+    stats_.graded_path = false;
+    stats_.subdomain_k.clear();
+    stats_.k_ratio_max = 0.0;
     stats_.k = stats_.lfs_min = stats_.shortest_separator = 0.0;
     stats_.split_points = 0;
     stats_.shielded_triangles = 0;
@@ -258,6 +308,8 @@ private:
   P partitioner_;
   E executor_;
   double area_ = 0.0;
+  /// Lower bound of the sizing field over the domain (infinity without a field).
+  double sizing_min_ = std::numeric_limits<double>::infinity();
   bool decomposed_ = false, decoupled_ = false;
   decomposition decomposition_;
   decoupled_decomposition decoupled_decomposition_;

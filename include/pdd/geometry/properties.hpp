@@ -3,10 +3,11 @@
 /// the domain side, minimum local feature size; pdd::analyze computes them all at once.
 #pragma once
 
+#include <pdd/core/bbox.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/detail/lfs.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/core/pslg.hpp>
 #include <pdd/geometry/validate.hpp>
 
 #include <algorithm>
@@ -16,16 +17,6 @@
 #include <numbers>
 
 namespace pdd {
-
-/// An axis-aligned bounding box.
-struct bbox {
-  double xmin = std::numeric_limits<double>::infinity();
-  double ymin = std::numeric_limits<double>::infinity();
-  double xmax = -std::numeric_limits<double>::infinity();
-  double ymax = -std::numeric_limits<double>::infinity();
-  double width() const noexcept { return xmax - xmin; }
-  double height() const noexcept { return ymax - ymin; }
-};
 
 /// The properties of a valid PSLG's domain that the pipeline's first step needs.
 struct pslg_properties {

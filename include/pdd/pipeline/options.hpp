@@ -5,6 +5,7 @@
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/sizing/any_sizing.hpp>
 
 #include <cstddef>
 #include <string>
@@ -15,6 +16,16 @@ namespace pdd {
 struct generate_options {
   /// Quality and uniform size bounds of every triangle.
   mesh_criteria criteria;
+  /// A sizing field besides criteria.max_area: the area bound at p is
+  /// min(criteria.max_area, sizing.area_at(p)). Empty (default): criteria.max_area alone.
+  /// With N > 1 the graded decoupling path (pdd::decouple_graded: k_i per subdomain from
+  /// m(D_i) = sizing_range over its bounding box, Theorem 22) is used when relation 7.1
+  /// holds on every separator and no shields, k_scale or k_override are in play; otherwise
+  /// (until Algorithm 7.1 decomposes further) the interim rule: the uniform path built for
+  /// the field's minimum over the domain's bounding box, so every interface piece is shorter
+  /// than 2k for every subdomain (generate_statistics::graded_fallback says why). The kernel
+  /// meshes each subdomain with the field itself either way.
+  any_sizing sizing{};
   /// N, the number of subdomains. 0: automatic (pdd::automatic_subdomains); 1: the kernel
   /// meshes the whole domain at once (no decomposition).
   std::size_t subdomains = 0;

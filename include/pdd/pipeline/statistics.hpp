@@ -6,6 +6,7 @@
 #include <pdd/meshing/meshing_statistics.hpp>
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 namespace pdd {
@@ -42,6 +43,14 @@ struct generate_statistics {
   generate_timings timings;
   decomposition_statistics decomposition; ///< MADD's measurements (N > 1)
   std::vector<subdomain_report> per_subdomain;
+  /// With a sizing field and N > 1: true when the graded decoupling path (decouple_graded,
+  /// one k_i per subdomain) was used, false when relation 7.1 failed somewhere (or shields,
+  /// k_scale or k_override were in play) and the interim uniform path with k from the field's
+  /// minimum was used instead (graded_fallback says why).
+  bool graded_path = false;
+  std::string graded_fallback;
+  std::vector<double> subdomain_k; ///< k_i per subdomain (graded path)
+  double k_ratio_max = 0.0;        ///< max k_j / k_i across interfaces (graded path)
 };
 
 } // namespace pdd

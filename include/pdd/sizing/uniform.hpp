@@ -8,11 +8,18 @@
 
 namespace pdd {
 
-/// Models SizingField with one area bound everywhere (infinity: no bound).
+/// Models BoundedSizingField with one area bound everywhere (infinity: no bound); its range
+/// over any non-empty box is exact.
 struct uniform_sizing {
   double area = std::numeric_limits<double>::infinity();
   double area_at(const point&) const noexcept { return area; }
+  sizing_bounds range(const bbox& b) const noexcept {
+    if (b.empty())
+      return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    return {area, area};
+  }
+  static constexpr const char* kind() noexcept { return "uniform"; }
 };
-static_assert(SizingField<uniform_sizing>);
+static_assert(BoundedSizingField<uniform_sizing>);
 
 } // namespace pdd

@@ -12,7 +12,7 @@
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/meshing/meshing_statistics.hpp>
 #include <pdd/shielding/apply_shields.hpp>
-#include <pdd/sizing/uniform.hpp>
+#include <pdd/sizing/any_sizing.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -33,8 +33,9 @@ namespace detail {
 template <DelaunayMesher M, MeshSink S>
 class meshing_run {
 public:
-  meshing_run(decoupled_decomposition& dd, const mesh_criteria& criteria, const M& mesher, S& sink)
-      : dd_(dd), criteria_(criteria), mesher_(mesher), sink_(sink) {
+  meshing_run(decoupled_decomposition& dd, const mesh_criteria& criteria, const any_sizing& sizing,
+              const M& mesher, S& sink)
+      : dd_(dd), criteria_(criteria), sizing_(sizing), mesher_(mesher), sink_(sink) {
     const auto m = dd.num_subdomains();
     stats.subdomains.resize(m);
     work.resize(m);
@@ -51,7 +52,7 @@ public:
     try {
       const auto t0 = std::chrono::steady_clock::now();
       const subdomain_input in = dd_.input(s);
-      mesher_result r = mesher_.mesh(in.domain, criteria_, uniform_sizing{});
+      mesher_result r = mesher_.mesh(in.domain, criteria_, sizing_);
       const std::vector<index_t> split = split_interface_pieces(in, r);
       subdomain_report& rep = stats.subdomains[s];
       rep.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -135,6 +136,7 @@ private:
 
   decoupled_decomposition& dd_;
   const mesh_criteria& criteria_;
+  const any_sizing& sizing_;
   const M& mesher_;
   S& sink_;
   std::mutex mutex_;

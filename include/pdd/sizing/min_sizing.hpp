@@ -1,0 +1,64 @@
+/// \file min_sizing.hpp
+/// pdd::min_sizing: the pointwise minimum of several sizing fields (e.g. a user field and a
+/// uniform --max-area).
+#pragma once
+
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/sizing/sizing_range.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <string>
+#include <tuple>
+
+namespace pdd {
+
+/// Models BoundedSizingField as F(p) = min_i F_i(p). Its range is {min_i lo_i, min_i hi_i}
+/// with each field's bounds from pdd::sizing_range (a true lower bound when every lo_i is:
+/// F >= min_i F_i >= min_i lo_i; and F <= F_i <= hi_i for every i).
+/// \tparam Fs SizingFields. Thread-safe when they are.
+template <SizingField... Fs>
+requires(sizeof...(Fs) > 0) struct min_sizing {
+  std::tuple<Fs...> fields;
+
+  explicit min_sizing(Fs... fs) : fields(std::move(fs)...) {}
+
+  double area_at(const point& p) const {
+    return std::apply(
+        [&](const auto&... f) { return std::min({static_cast<double>(f.area_at(p))...}); }, fields);
+  }
+  sizing_bounds range(const bbox& b) const {
+    return std::apply(
+        [&](const auto&... f) {
+          sizing_bounds r{std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::infinity()};
+          ((r = combine(r, sizing_range(f, b))), ...);
+          return r;
+        },
+        fields);
+  }
+  /// "min(kind_1, kind_2, ...)".
+  std::string kind() const {
+    return std::apply(
+        [](const auto&... f) {
+          std::string s;
+          ((s += (s.empty() ? "" : ", ") + std::string(kind_of(f))), ...);
+          return "min(" + s + ")";
+        },
+        fields);
+  }
+
+private:
+  static sizing_bounds combine(sizing_bounds a, sizing_bounds b) {
+    return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
+  }
+  template <class F>
+  static std::string kind_of(const F& f) {
+    if constexpr (requires { f.kind(); })
+      return std::string(f.kind());
+    else
+      return "callable";
+  }
+};
+
+} // namespace pdd

@@ -1,0 +1,47 @@
+/// \file sizing_range.hpp
+/// pdd::sizing_range: m(D) and M(D) of any SizingField over a box (dissertation 7.3-7.5).
+#pragma once
+
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/sizing/detail/sampled_range.hpp>
+
+#include <cstddef>
+
+namespace pdd {
+
+/// Grid resolution of pdd::sizing_range for fields without range().
+struct sizing_range_options {
+  /// Cells per side of the first evaluation grid (refined x4 up to 1024 when needed).
+  std::size_t cells = 64;
+};
+
+/// Bounds lo <= F(p) <= hi over the closed box `b` (the customisation point of the graded
+/// method's m(D) and M(D); pass a subdomain's bounding box: a bound over the box bounds the
+/// subdomain too).
+///
+/// A BoundedSizingField answers with its own f.range(b) (exact from nodes for background
+/// meshes and grids, exact for uniform fields). Any other SizingField (a callable, an
+/// expression) is evaluated on a grid of `o.cells` x `o.cells` cells over the box, and each
+/// cell contributes lo = (smallest corner value) - 2 (Dxx + Dyy) / 8 and hi = (largest corner
+/// value) + 2 (Dxx + Dyy) / 8, where Dxx and Dyy are the largest |second differences| of the
+/// node values around the cell (its nodes and its 8 neighbours). Safety rule: (Dxx + Dyy) / 8
+/// is the classical bound on how far a function with second derivatives h^2 |f_xx| <= Dxx,
+/// h^2 |f_yy| <= Dyy dips below its bilinear interpolant in a cell; the factor 2 covers a
+/// curvature up to twice what the surrounding nodes show. So lo is a true lower bound for
+/// every linear, bilinear and quadratic field (exact second differences), and for every
+/// smooth field whose curvature the grid resolves; it cannot see a feature narrower than a
+/// cell (no sampling can): give such a field a range() (e.g. analytic_sizing with a range
+/// function) or use a background mesh. When the margin leaves no positive lower bound the
+/// grid is refined x4 (to 1024 cells per side at most).
+/// \tparam F a SizingField. \throws pdd::sizing_error for a value <= 0 or NaN at a node, or
+/// no positive lower bound at 1024 cells. An empty box gives {inf, inf}.
+/// Complexity: O(cells^2) evaluations for unbounded fields. Thread-safe when F is.
+template <SizingField F>
+sizing_bounds sizing_range(const F& f, const bbox& b, const sizing_range_options& o = {}) {
+  if constexpr (BoundedSizingField<F>)
+    return f.range(b);
+  else
+    return detail::sampled_range(f, b, o.cells);
+}
+
+} // namespace pdd
