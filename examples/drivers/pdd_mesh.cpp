@@ -11,14 +11,13 @@
 // a triangle outside the shielded corners that violates the angle or area bound: every mesh is
 // checked before it is written, and nothing is written then).
 #include "exit_code.hpp"
+#include "sizing_options.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/angle_histogram.hpp>
-#include <pdd/io/area_grid.hpp>
 #include <pdd/io/atomic_file.hpp>
-#include <pdd/io/background_mesh.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/io/svg.hpp>
 #include <pdd/io/write_mesh.hpp>
@@ -31,9 +30,7 @@
 #include <pdd/pipeline/system.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/any_sizing.hpp>
-#include <pdd/sizing/expression.hpp>
 #include <pdd/sizing/min_sizing.hpp>
-#include <pdd/sizing/regional.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
 
@@ -42,7 +39,6 @@
 
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -50,7 +46,6 @@
 #include <mutex>
 #include <optional>
 #include <string>
-#include <vector>
 
 namespace {
 
@@ -59,7 +54,7 @@ using namespace pdd::drivers; // exit codes
 struct cli_options {
   std::string input, output, per_subdomain_dir, stats, svg, svg_histogram;
   std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
-  std::string sizing_expression, background_mesh, area_grid; // sizing fields (empty: none)
+  pdd::drivers::sizing_sources sizing; // --sizing, --background, --area-grid
   double min_angle = pdd::mesh_criteria{}.min_angle_deg;
   double max_area = std::numeric_limits<double>::infinity();
   std::size_t subdomains = 0;
@@ -154,42 +149,6 @@ struct mesh_run {
   std::size_t triangles() const { return mesh ? mesh->triangles.size() : gs.triangles; }
 };
 
-/// The names of the fields (and "uniform" for a finite --max-area) for --stats: "none", one
-/// name, or "min(a, b, ...)".
-std::string sizing_kind(const std::vector<pdd::any_sizing>& fields, double max_area) {
-  std::vector<std::string> names;
-  for (const auto& f : fields)
-    names.push_back(f.kind());
-  if (std::isfinite(max_area)) names.emplace_back("uniform");
-  if (names.empty()) return "none";
-  if (names.size() == 1) return names[0];
-  std::string kind = "min(";
-  for (std::size_t i = 0; i < names.size(); ++i)
-    kind += names[i] + (i + 1 < names.size() ? ", " : ")");
-  return kind;
-}
-
-/// The sizing field of the run: the minimum of --sizing, --background, --area-grid and the
-/// .poly's regional areas (each when given); empty when none is. `kind` names it for --stats.
-pdd::any_sizing sizing_field(const cli_options& o, const pdd::pslg& domain, std::string& kind) {
-  std::vector<pdd::any_sizing> fields;
-  if (!o.sizing_expression.empty())
-    fields.emplace_back(pdd::expression_sizing(o.sizing_expression));
-  if (!o.background_mesh.empty()) fields.emplace_back(pdd::read_background_mesh(o.background_mesh));
-  if (!o.area_grid.empty()) fields.emplace_back(pdd::read_area_grid(o.area_grid));
-  for (const pdd::region& reg : domain.regions)
-    if (reg.max_area > 0.0) {
-      fields.emplace_back(pdd::regional_sizing(domain));
-      break;
-    }
-  kind = sizing_kind(fields, o.max_area);
-  if (fields.empty()) return {};
-  pdd::any_sizing combined = fields[0];
-  for (std::size_t i = 1; i < fields.size(); ++i)
-    combined = pdd::min_sizing(combined, fields[i]);
-  return combined;
-}
-
 /// Reads and validates the input and sets up the options. Input angles below 60 deg are
 /// shielded by the pipeline (dissertation 8.1): each becomes one shielded triangle whose
 /// smallest angle is the input angle; the quality bound holds elsewhere.
@@ -201,7 +160,7 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.options.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
   r.options.subdomains = o.subdomains;
   r.options.threads = o.threads;
-  r.options.sizing = sizing_field(o, r.domain, r.sizing_kind);
+  r.options.sizing = sizing_field(o.sizing, r.domain, o.max_area, r.sizing_kind);
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
   r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
 }
@@ -409,14 +368,14 @@ int main(int argc, char** argv) {
   app.add_option("--min-angle", o.min_angle, "minimum angle in degrees (default 20.7)")
       ->check(CLI::Range(1.0, 34.0));
   app.add_option("--max-area", o.max_area, "maximum triangle area")->check(CLI::PositiveNumber);
-  app.add_option("--sizing", o.sizing_expression,
+  app.add_option("--sizing", o.sizing.expression,
                  "maximum triangle area as an expression of x and y (muParser), e.g. "
                  "\"1e-4*(1+10*x^2)\"");
-  app.add_option("--background", o.background_mesh,
+  app.add_option("--background", o.sizing.background_mesh,
                  "background mesh FILE.node (+ FILE.ele): area per vertex as the .node's one "
                  "attribute, or per triangle in FILE.area")
       ->check(CLI::ExistingFile);
-  app.add_option("--area-grid", o.area_grid, "structured area grid file (see README)")
+  app.add_option("--area-grid", o.sizing.area_grid, "structured area grid file (see README)")
       ->check(CLI::ExistingFile);
   app.add_option("--subdomains", o.subdomains,
                  "number of subdomains (1: monolithic kernel; default: automatic)")
