@@ -23,7 +23,8 @@ struct meshing_options {
   mesh_criteria criteria;   ///< the same criteria the decoupling path was built for
   unsigned max_repairs = 3; ///< invariance repair rounds (each halves k on failing segments)
   /// The kernel's sizing field besides criteria.max_area (empty: none). The decoupling path
-  /// must have been built for its minimum (interim rule of pdd::pipeline, see generate.hpp).
+  /// must have been built for it: k from its minimum (pdd::decouple on lowered criteria) or
+  /// k_i from its minimum over each subdomain (pdd::decouple_graded); see pdd::pipeline.
   any_sizing sizing{};
 };
 
