@@ -53,7 +53,7 @@ using namespace pdd::drivers; // exit codes
 
 struct cli_options {
   std::string input, output, per_subdomain_dir, stats, svg, svg_histogram;
-  std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
+  std::vector<double> svg_window;      ///< x0, y0, x1, y1 of the inset (empty: automatic)
   pdd::drivers::sizing_sources sizing; // --sizing, --background, --area-grid
   double min_angle = pdd::mesh_criteria{}.min_angle_deg;
   double max_area = std::numeric_limits<double>::infinity();

@@ -10,7 +10,10 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -55,6 +58,25 @@ inline std::vector<std::string> dir_entries(const std::filesystem::path& dir) {
     out.push_back(e.path().filename().string());
   std::sort(out.begin(), out.end());
   return out;
+}
+
+/// What a command printed (stdout and stderr together) and its exit status (-1: it did not exit).
+struct command_result {
+  int code;
+  std::string output;
+};
+
+/// Runs a shell command line, stderr joined to stdout.
+inline command_result run_command(const std::string& command_line) {
+  const std::string cmd = command_line + " 2>&1";
+  FILE* p = popen(cmd.c_str(), "r");
+  if (!p) return {-1, "popen failed"};
+  std::string out;
+  char buf[4096];
+  while (std::size_t n = std::fread(buf, 1, sizeof buf, p))
+    out.append(buf, n);
+  const int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
 /// True when /usr/bin/python3 can import the given modules.

@@ -21,21 +21,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct run_result {
-  int code;
-  std::string output; // stdout and stderr together
-};
+using run_result = pdd::test::command_result;
 
 run_result run(const std::string& exe, const std::string& args) {
-  const std::string cmd = "'" + exe + "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return {-1, "popen failed"};
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p))
-    out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const std::string cmd = "'" + exe + "' " + args;
+  return pdd::test::run_command(cmd);
 }
 
 nlohmann::json read_json(const fs::path& p) {

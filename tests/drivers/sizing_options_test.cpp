@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "test_files.hpp"
 #include "test_support.hpp"
 
 #include <sys/wait.h>
@@ -14,21 +15,11 @@
 
 namespace {
 
-struct run_result {
-  int code;
-  std::string output;
-};
+using run_result = pdd::test::command_result;
 
 run_result run_mesh(const std::string& args) {
-  const std::string cmd = std::string("'") + PDD_MESH_EXE + "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return {-1, "popen failed"};
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p))
-    out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+  const std::string cmd = std::string("'") + PDD_MESH_EXE + "' " + args;
+  return pdd::test::run_command(cmd);
 }
 
 std::string write_text(const std::string& name, const std::string& text) {

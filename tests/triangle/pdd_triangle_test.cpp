@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "test_files.hpp"
 #include "test_support.hpp"
 
 #include <sys/wait.h>
@@ -18,22 +19,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct run_result {
-  int code;
-  std::string output;
-};
+using run_result = pdd::test::command_result;
 
 run_result run_in(const fs::path& dir, const std::string& args) {
   const std::string cmd =
-      "cd '" + dir.string() + "' && '" + std::string(PDD_TRIANGLE_EXE) + "' " + args + " 2>&1";
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return {-1, "popen failed"};
-  std::string out;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p))
-    out.append(buf, n);
-  const int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+      "cd '" + dir.string() + "' && '" + std::string(PDD_TRIANGLE_EXE) + "' " + args;
+  return pdd::test::run_command(cmd);
 }
 
 /// A fresh folder holding key.poly.
