@@ -31,7 +31,18 @@ namespace pdd::detail {
 /// a task_scope at the start of every task body (and reduction join), call join() after it.
 class tsan_fork_join {
 public:
-  tsan_fork_join() { release(&fork_); }
+  tsan_fork_join() {
+    release(&fork_);
+    release(&any_fork());
+  }
+
+  /// The first statement of every task body, before it reads anything its closure captured:
+  /// the closure lives on the caller's stack and a task reads it before it can reach this
+  /// object's own fork edge, so the fork is also released on one process-wide address that a
+  /// task acquires without reading its closure (a stack slot reused by the caller before the
+  /// construct was otherwise reported as a race). Tasks never release it, so it orders no two
+  /// tasks.
+  static void task_begins() { acquire(&any_fork()); }
   tsan_fork_join(const tsan_fork_join&) = delete;
   tsan_fork_join& operator=(const tsan_fork_join&) = delete;
 
@@ -63,6 +74,10 @@ private:
   static void acquire(const void*) {}
   static void release(const void*) {}
 #endif
+  static char& any_fork() {
+    static char address = 0;
+    return address;
+  }
   char fork_ = 0;
   mutable char join_ = 0;
 };

@@ -64,6 +64,7 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
     const detail::tsan_fork_join fork_join;
     arena.execute([&] {
       tbb::parallel_for(std::size_t{0}, order->size(), [&](std::size_t k) {
+        pdd::detail::tsan_fork_join::task_begins();
         const auto task = fork_join.task();
         detail::madd_split_options sk = so;
         sk.target_length = detail::target_length(state.leaves[(*order)[k]].region, o, global_h);

@@ -66,6 +66,7 @@ mesh_statistics compute_statistics_impl(const triangle_mesh& m, const AreaBound&
   using range = tbb::blocked_range<std::size_t>;
   const detail::tsan_fork_join fork_join;
   const auto body = [&](const range& r, statistics_accumulator acc) {
+    pdd::detail::tsan_fork_join::task_begins();
     const auto task = fork_join.task();
     for (std::size_t t = r.begin(); t != r.end(); ++t) {
       const auto& tri = m.triangles[t];
@@ -92,6 +93,7 @@ mesh_statistics compute_statistics_impl(const triangle_mesh& m, const AreaBound&
   const statistics_accumulator acc = tbb::parallel_deterministic_reduce(
       range(0, m.triangles.size(), statistics_grain), statistics_accumulator{}, body,
       [&](statistics_accumulator x, const statistics_accumulator& y) {
+        pdd::detail::tsan_fork_join::task_begins();
         const auto task = fork_join.task();
         x.join(y);
         return x;

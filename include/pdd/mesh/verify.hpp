@@ -99,6 +99,7 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
   const double min_angle = o.criteria.min_angle_deg - 1e-9;
   const tsan_fork_join fork_join;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flags.size(), 1024), [&](const auto& rg) {
+    pdd::detail::tsan_fork_join::task_begins();
     const auto task = fork_join.task();
     for (std::size_t t = rg.begin(); t != rg.end(); ++t) {
       const auto& tri = m.triangles[t];
@@ -181,6 +182,7 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
   std::vector<std::uint8_t> flags(edges.size(), 0);
   const tsan_fork_join fork_join;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 1024), [&](const auto& rg) {
+    pdd::detail::tsan_fork_join::task_begins();
     const auto task = fork_join.task();
     for (std::size_t k = rg.begin(); k != rg.end(); ++k) {
       const vi::edge_record& e = edges[k];
@@ -270,6 +272,7 @@ inline double mesh_area(const triangle_mesh& m, const std::vector<std::uint8_t>&
   const double area = tbb::parallel_deterministic_reduce(
       tbb::blocked_range<std::size_t>(0, m.triangles.size(), 4096), 0.0,
       [&](const auto& rg, double acc) {
+        pdd::detail::tsan_fork_join::task_begins();
         const auto task = fork_join.task();
         for (std::size_t t = rg.begin(); t != rg.end(); ++t)
           if (!(flags[t] & tri_malformed)) {

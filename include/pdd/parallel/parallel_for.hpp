@@ -25,6 +25,7 @@ void parallel_for_index(std::size_t n, unsigned threads, F&& f) {
   const tsan_fork_join fork_join;
   arena.execute([&] {
     tbb::parallel_for(std::size_t{0}, n, [&](std::size_t i) {
+      pdd::detail::tsan_fork_join::task_begins();
       const auto task = fork_join.task();
       f(i);
     });

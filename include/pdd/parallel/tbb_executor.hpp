@@ -53,6 +53,7 @@ struct tbb_executor {
         tbb::parallel_for(
             0, workers, 1,
             [&](int) {
+              pdd::detail::tsan_fork_join::task_begins();
               const auto task = fork_join.task();
               for (std::size_t pos; (pos = next.fetch_add(1, std::memory_order_relaxed)) < n;)
                 errors.guarded(job, order[pos]);
