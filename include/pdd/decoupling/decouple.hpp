@@ -117,19 +117,11 @@ decoupled_decomposition decouple(decomposition d, const decoupling_options& opti
                            " (lfs_min " + std::to_string(dd.lfs_min) + ", shortest separator " +
                            std::to_string(dd.shortest_separator) + ")");
   dd.parts = std::move(d);
-  std::size_t total = 0;
   for (path_edge& e : dd.path) {
     e.k = dd.k;
     e.pieces = interface_split_count(e.length, dd.k);
-    total += e.pieces - 1;
   }
-  dd.points.reserve(total);
-  for (path_edge& e : dd.path) {
-    e.first_point = dd.points.size();
-    const point a = dd.parts.vertices[e.u], b = dd.parts.vertices[e.v];
-    for (index_t i = 1; i < e.pieces; ++i)
-      dd.points.push_back(interface_split_point(a, b, i, e.pieces));
-  }
+  detail::place_split_points(dd);
   return dd;
 }
 

@@ -8,6 +8,7 @@
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
+#include <pdd/decoupling/detail/build.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/decomposition.hpp>
@@ -84,12 +85,7 @@ graded_decoupling decouple_graded(decomposition d, const mesh_criteria& criteria
           std::to_string(ki) + " and " + std::to_string(kj) +
           "): no piece count meets Theorem 22; the subdomains need a finer decomposition");
   }
-  for (path_edge& e : dd.path) {
-    e.first_point = dd.points.size();
-    const point a = dd.parts.vertices[e.u], b = dd.parts.vertices[e.v];
-    for (index_t i = 1; i < e.pieces; ++i)
-      dd.points.push_back(interface_split_point(a, b, i, e.pieces));
-  }
+  detail::place_split_points(dd);
   return g;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/decomposition.hpp>
 
@@ -105,6 +106,22 @@ inline void collect_path_edges(const decomposition& d, std::vector<path_edge>& p
       throw decoupling_error("interface edge between vertices " + std::to_string(path[e].u) +
                              " and " + std::to_string(path[e].v) + " appears only in subdomain " +
                              std::to_string(seen[e] == 1 ? path[e].sides[0] : path[e].sides[1]));
+}
+
+/// Places the interface points of every path edge (e.pieces - 1 each, in path order) into
+/// dd.points and records each edge's first point; the same formula on both sides of an
+/// interface (interface_split_point), so both sides' vertices are bitwise identical.
+inline void place_split_points(decoupled_decomposition& dd) {
+  std::size_t total = 0;
+  for (const path_edge& e : dd.path)
+    total += e.pieces - 1;
+  dd.points.reserve(dd.points.size() + total);
+  for (path_edge& e : dd.path) {
+    e.first_point = dd.points.size();
+    const point a = dd.parts.vertices[e.u], b = dd.parts.vertices[e.v];
+    for (index_t i = 1; i < e.pieces; ++i)
+      dd.points.push_back(interface_split_point(a, b, i, e.pieces));
+  }
 }
 
 } // namespace pdd::detail
