@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/madd/decomposition_statistics.hpp>
+#include <pdd/madd/split_policy.hpp>
 
 #include <cstddef>
 #include <limits>
@@ -24,7 +25,8 @@ enum class madd_refinement_scale {
 
 /// Options of pdd::decompose (designated initialisers welcome).
 struct madd_options {
-  /// N: the number of subdomains (exactly), unless max_subdomain_area is finite.
+  /// N: the number of subdomains (exactly), unless max_subdomain_area is finite or a
+  /// split_policy is set (then the most subdomains made).
   std::size_t subdomains = 2;
   /// Phi0 (degrees, in (0, 90)): every angle a separator forms with the boundary or with
   /// another separator is >= Phi0 (criterion C1; 60 for Ruppert-type meshers).
@@ -67,6 +69,12 @@ struct madd_options {
   double round_fraction = 0.6;
   /// Worker threads for the concurrent splits (4.3); 0: all. The result does not depend on it.
   unsigned threads = 0;
+  /// Graded decomposition (4.4, 7.3): when set, it decides which leaves are split and in which
+  /// order instead of the area: MADD stops when no leaf has a positive priority or when
+  /// `subdomains` leaves exist; max_subdomain_area must then stay infinite. A leaf whose split
+  /// fails while its priority stays positive ends pdd::decompose with a decomposition_error
+  /// naming it, once nothing else can be split.
+  madd_split_policy split_policy{};
 };
 
 } // namespace pdd

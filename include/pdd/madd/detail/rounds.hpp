@@ -9,6 +9,7 @@
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/split.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/split_policy.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -38,6 +39,8 @@ inline void check_madd_options(const madd_options& o) {
   if (!(o.max_subdomain_area > 0.0)) bad("max_subdomain_area must be positive");
   if (!(o.round_fraction > 0.0 && o.round_fraction <= 1.0)) bad("round_fraction must be in (0, 1]");
   if (!std::isfinite(o.max_subdomain_area) && o.subdomains < 1) bad("subdomains must be >= 1");
+  if (o.split_policy && std::isfinite(o.max_subdomain_area))
+    bad("max_subdomain_area must stay infinite with a split_policy (the policy decides)");
 }
 
 /// Target boundary length h (refinement level 0) for a split of r (4.1).
@@ -57,7 +60,7 @@ struct madd_leaf {
 /// The leaves of decompose's split tree and the goal (N subdomains, or an area bound).
 struct madd_state {
   madd_state(std::vector<madd_region> regions, const madd_options& o)
-      : by_area(std::isfinite(o.max_subdomain_area)) {
+      : by_area(std::isfinite(o.max_subdomain_area)), by_policy(bool(o.split_policy)) {
     if (regions.empty()) throw decomposition_error("MADD: the PSLG bounds no domain");
     if (!by_area && o.subdomains < regions.size())
       throw decomposition_error("MADD: the domain has " + std::to_string(regions.size()) +
@@ -66,11 +69,33 @@ struct madd_state {
     for (auto& r : regions)
       leaves.push_back({std::move(r), false, {}});
   }
-  bool by_area; ///< split until every area <= max_subdomain_area (3.7), else into N
+  bool by_area;   ///< split until every area <= max_subdomain_area (3.7), else into N
+  bool by_policy; ///< madd_options::split_policy decides (4.4, 7.3)
   std::vector<madd_leaf> leaves;
+  std::vector<double> priority; ///< by_policy: the policy's priority of every leaf
 
-  /// Whether leaf i still has to be split (by area: larger than the bound).
+  /// Asks the split policy for the priority of every leaf (by_policy only).
+  /// \throws decomposition_error when it returns the wrong number of priorities.
+  void update_priorities(const madd_options& o) {
+    if (!by_policy) return;
+    std::vector<madd_leaf_view> views(leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+      views[i].area = leaves[i].region.area;
+      for (const madd_loop& l : leaves[i].region.loops)
+        views[i].loops.emplace_back(l.points);
+    }
+    priority = o.split_policy(views);
+    if (priority.size() != leaves.size())
+      throw decomposition_error("MADD: the split policy returned " +
+                                std::to_string(priority.size()) + " priorities for " +
+                                std::to_string(leaves.size()) + " subdomains");
+  }
+  /// What orders the splits: the policy's priority, else the area (largest first).
+  double split_key(std::size_t i) const { return by_policy ? priority[i] : leaves[i].region.area; }
+  /// Whether leaf i still has to be split (by area: larger than the bound; by policy: a
+  /// positive priority).
   bool wanted(std::size_t i, const madd_options& o) const {
+    if (by_policy) return priority[i] > 0.0;
     return !by_area || leaves[i].region.area > o.max_subdomain_area;
   }
   /// The regions, moved out (the state is spent).
@@ -113,37 +138,48 @@ inline madd_split_options split_options_for(const madd_options& o) {
 
 /// \throws decomposition_error naming every leaf that could not be split and why.
 [[noreturn]] inline void throw_unsplittable(const madd_state& s, const madd_options& o) {
-  std::string msg = "MADD: cannot split the domain into " +
-                    (s.by_area ? "subdomains of area <= " + std::to_string(o.max_subdomain_area)
-                               : std::to_string(o.subdomains) + " subdomains") +
-                    " (reached " + std::to_string(s.leaves.size()) + ")";
+  std::string msg =
+      "MADD: cannot split the domain " +
+      (s.by_policy ? std::string("as the split policy asks")
+       : s.by_area ? "into subdomains of area <= " + std::to_string(o.max_subdomain_area)
+                   : "into " + std::to_string(o.subdomains) + " subdomains") +
+      " (reached " + std::to_string(s.leaves.size()) + ")";
   for (std::size_t i = 0; i < s.leaves.size(); ++i)
     if (s.leaves[i].final && s.wanted(i, o))
       msg += "; subdomain " + std::to_string(i) + " (area " +
-             std::to_string(s.leaves[i].region.area) + ", " +
+             std::to_string(s.leaves[i].region.area) +
+             (s.by_policy ? ", priority " + std::to_string(s.priority[i]) : std::string()) + ", " +
              std::to_string(region_vertex_count(s.leaves[i].region)) +
              " vertices): " + s.leaves[i].why;
   throw decomposition_error(msg);
 }
 
-/// The leaves to split in the next round (4.3), largest first (ties: lower index): only what a
-/// sequential largest-first loop would split next, i.e. leaves of at least round_fraction
-/// times the largest area (their children are smaller than that as long as splits are
-/// balanced to round_fraction, so no child would be split before them), at most N - count.
-/// nullopt when the goal is reached. \throws decomposition_error when nothing can be split.
-inline std::optional<std::vector<std::size_t>> next_round(const madd_state& s,
-                                                          const madd_options& o) {
+/// Whether some leaf still has to be split.
+inline bool any_wanted(const madd_state& s, const madd_options& o) {
+  for (std::size_t i = 0; i < s.leaves.size(); ++i)
+    if (s.wanted(i, o)) return true;
+  return false;
+}
+
+/// The leaves to split in the next round (4.3), largest key first (the area, or the split
+/// policy's priority; ties: lower index): only what a sequential largest-first loop would
+/// split next, i.e. leaves of at least round_fraction times the largest key (their children
+/// are smaller than that as long as splits are balanced to round_fraction, so no child would
+/// be split before them), at most N - count. nullopt when the goal is reached.
+/// \throws decomposition_error when nothing can be split.
+inline std::optional<std::vector<std::size_t>> next_round(madd_state& s, const madd_options& o) {
+  s.update_priorities(o);
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < s.leaves.size(); ++i)
     if (!s.leaves[i].final && s.wanted(i, o)) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    return s.leaves[a].region.area > s.leaves[b].region.area;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return s.split_key(a) > s.split_key(b); });
   if (s.by_area ? order.empty() : s.leaves.size() >= o.subdomains) return std::nullopt;
+  if (s.by_policy && !any_wanted(s, o)) return std::nullopt;
   if (order.empty()) throw_unsplittable(s, o);
-  const double cut = o.round_fraction * s.leaves[order[0]].region.area;
+  const double cut = o.round_fraction * s.split_key(order[0]);
   std::size_t take = 0;
-  while (take < order.size() && s.leaves[order[take]].region.area >= cut)
+  while (take < order.size() && s.split_key(order[take]) >= cut)
     ++take;
   if (!s.by_area) take = std::min(take, o.subdomains - s.leaves.size());
   order.resize(take);
