@@ -2,11 +2,12 @@
 # Installs the Debian 12 packages pdd needs, when any is missing (as root, or with sudo).
 # clang (Clang 14) builds the sanitizer, fuzzing and ThreadSanitizer configurations; its
 # sanitizer and libFuzzer runtimes are in libclang-rt-14-dev, which clang only recommends.
+# libopenmpi-dev and openmpi-bin (mpiexec) build and test the MPI backend (pdd-mesh-mpi).
 set -euo pipefail
 packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtbb-dev libmetis-dev
           libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev python3-meshio
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
-          clang libclang-rt-14-dev)
+          clang libclang-rt-14-dev libopenmpi-dev openmpi-bin)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

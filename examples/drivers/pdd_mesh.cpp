@@ -11,7 +11,7 @@
 // a triangle outside the shielded corners that violates the angle or area bound: every mesh is
 // checked before it is written, and nothing is written then).
 #include "exit_code.hpp"
-#include "sizing_options.hpp"
+#include "mesh_options.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
@@ -51,15 +51,11 @@ namespace {
 
 using namespace pdd::drivers; // exit codes
 
-struct cli_options {
-  std::string input, output, per_subdomain_dir, stats, svg, svg_histogram;
-  std::vector<double> svg_window;      ///< x0, y0, x1, y1 of the inset (empty: automatic)
-  pdd::drivers::sizing_sources sizing; // --sizing, --background, --area-grid
-  double min_angle = pdd::mesh_criteria{}.min_angle_deg;
-  double max_area = std::numeric_limits<double>::infinity();
-  std::size_t subdomains = 0;
-  unsigned threads = 0;
-  bool verify = false, compare_monolithic = false, quiet = false;
+/// The options shared with pdd-mesh-mpi (mesh_options.hpp) and pdd-mesh's own.
+struct cli_options : pdd::drivers::mesh_options {
+  std::string output, svg, svg_histogram;
+  std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
+  bool verify = false, compare_monolithic = false;
 };
 
 /// Stage lines and the progress bar on stderr, drawn only when stderr is a terminal.
@@ -157,10 +153,7 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.domain = pdd::read_poly(o.input);
   r.props = pdd::analyze(r.domain); // validates, throws geometry_error
   r.t_read = pdd::seconds_since(t0);
-  r.options.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
-  r.options.subdomains = o.subdomains;
-  r.options.threads = o.threads;
-  r.options.sizing = sizing_field(o.sizing, r.domain, o.max_area, r.sizing_kind);
+  r.options = generate_options_for(o, r.domain, r.sizing_kind);
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
   r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
 }
@@ -363,33 +356,12 @@ int run(const cli_options& o) {
 int main(int argc, char** argv) {
   cli_options o;
   CLI::App app{"pdd-mesh: guaranteed-quality 2D Delaunay meshing of a Triangle .poly domain"};
-  app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
+  auto* per = add_mesh_options(app, o, "threads (default: all cores)");
   app.add_option("-o,--output", o.output, "output mesh: .vtu, .node (+.ele/.poly), .msh, .svg");
-  app.add_option("--min-angle", o.min_angle, "minimum angle in degrees (default 20.7)")
-      ->check(CLI::Range(1.0, 34.0));
-  app.add_option("--max-area", o.max_area, "maximum triangle area")->check(CLI::PositiveNumber);
-  app.add_option("--sizing", o.sizing.expression,
-                 "maximum triangle area as an expression of x and y (muParser), e.g. "
-                 "\"1e-4*(1+10*x^2)\"");
-  app.add_option("--background", o.sizing.background_mesh,
-                 "background mesh FILE.node (+ FILE.ele): area per vertex as the .node's one "
-                 "attribute, or per triangle in FILE.area")
-      ->check(CLI::ExistingFile);
-  app.add_option("--area-grid", o.sizing.area_grid, "structured area grid file (see README)")
-      ->check(CLI::ExistingFile);
-  app.add_option("--subdomains", o.subdomains,
-                 "number of subdomains (1: monolithic kernel; default: automatic)")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
-  app.add_option("--threads", o.threads, "threads (default: all cores)")
-      ->check(CLI::Range(1u, 4096u));
-  auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
-                             "write one .vtu per subdomain and an index mesh.pvtu into DIR "
-                             "(nothing is kept in memory)");
   auto* ver =
       app.add_flag("--verify", o.verify, "verify Delaunay property, conformity, quality and area");
   app.add_flag("--compare-monolithic", o.compare_monolithic,
                "also mesh the whole domain monolithically and report over_refinement_pct");
-  app.add_option("--stats", o.stats, "write statistics as JSON to this file");
   auto* svg = app.add_option("--svg", o.svg, "draw the mesh to this SVG file");
   auto* win = app.add_option("--svg-window", o.svg_window,
                              "the --svg picture's zoomed inset: x0,y0,x1,y1 (default: automatic "
@@ -401,7 +373,6 @@ int main(int argc, char** argv) {
                               "draw the histogram of the triangle angles to this SVG file");
   auto* out = app.get_option("--output");
   per->excludes(ver)->excludes(svg)->excludes(out)->excludes(win)->excludes(hist);
-  app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

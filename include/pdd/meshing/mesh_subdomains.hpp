@@ -11,22 +11,13 @@
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/meshing/detail/mesh_subdomain.hpp>
+#include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 
 #include <utility>
 #include <vector>
 
 namespace pdd {
-
-/// Options of pdd::mesh_subdomains.
-struct meshing_options {
-  mesh_criteria criteria;   ///< the same criteria the decoupling path was built for
-  unsigned max_repairs = 3; ///< invariance repair rounds (each halves k on failing segments)
-  /// The kernel's sizing field besides criteria.max_area (empty: none). The decoupling path
-  /// must have been built for it: k from its minimum (pdd::decouple on lowered criteria) or
-  /// k_i from its minimum over each subdomain (pdd::decouple_graded); see pdd::pipeline.
-  any_sizing sizing{};
-};
 
 /// Meshes each subdomain's input() with `mesher` under `options.criteria`, concurrently on
 /// `executor` (largest expected work, area / max_area, first), and delivers every mesh whose
@@ -47,7 +38,7 @@ struct meshing_options {
 template <DelaunayMesher M, Executor E, MeshSink S>
 meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_options& options,
                                    const M& mesher, const E& executor, S& sink) {
-  detail::meshing_run<M, S> run(dd, options.criteria, options.sizing, mesher, sink);
+  detail::meshing_run<M, S> run(dd, options, mesher, sink);
   const auto m = static_cast<index_t>(dd.num_subdomains());
   start_sink(sink, m);
   executor.run(run.work, [&](index_t s) { run.mesh_one(s); });

@@ -4,6 +4,7 @@
 
 #include <pdd/concepts/executor.hpp>
 #include <pdd/parallel/detail/jobs.hpp>
+#include <pdd/parallel/schedule_order.hpp>
 
 #include <span>
 
@@ -21,7 +22,7 @@ struct sequential_executor {
   template <class Job>
   void run(std::span<const double> work, Job&& job) const {
     detail::job_errors errors(work.size());
-    for (const index_t i : detail::schedule_order(work))
+    for (const index_t i : schedule_order(work))
       errors.guarded(job, i);
     errors.rethrow_first();
   }

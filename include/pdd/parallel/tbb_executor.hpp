@@ -5,6 +5,7 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/parallel/detail/jobs.hpp>
+#include <pdd/parallel/schedule_order.hpp>
 
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
@@ -38,7 +39,7 @@ struct tbb_executor {
   void run(std::span<const double> work, Job&& job) const {
     const std::size_t n = work.size();
     if (n == 0) return;
-    const std::vector<index_t> order = detail::schedule_order(work);
+    const std::vector<index_t> order = schedule_order(work);
     detail::job_errors errors(n);
     const unsigned p = concurrency();
     if (p == 1 || n == 1) {

@@ -1,28 +1,14 @@
 /// \file jobs.hpp
-/// Implementation helpers shared by the executors: the start order of jobs and the
-/// collection and rethrowing of job exceptions.
+/// Implementation helpers shared by the executors: the collection and rethrowing of job
+/// exceptions (the start order is pdd::schedule_order).
 #pragma once
 
 #include <pdd/core/index.hpp>
 
-#include <algorithm>
-#include <cmath>
 #include <exception>
-#include <numeric>
-#include <span>
 #include <vector>
 
 namespace pdd::detail {
-
-/// Job indices in start order: decreasing expected work, ties by index (NaN counts as 0).
-/// Complexity O(n log n).
-inline std::vector<index_t> schedule_order(std::span<const double> work) {
-  std::vector<index_t> order(work.size());
-  std::iota(order.begin(), order.end(), index_t{0});
-  auto w = [&](index_t i) { return std::isnan(work[i]) ? 0.0 : work[i]; };
-  std::stable_sort(order.begin(), order.end(), [&](index_t a, index_t b) { return w(a) > w(b); });
-  return order;
-}
 
 /// One slot per job for the exception it threw; written by the job's own thread only.
 class job_errors {

@@ -1,0 +1,74 @@
+/// \file mesh_options.hpp
+/// The options pdd-mesh and pdd-mesh-mpi share (the input, the quality and sizing criteria, N,
+/// threads, the per-subdomain output, --stats, --quiet), registered once for both, and the
+/// generate_options they give.
+#pragma once
+
+#include "sizing_options.hpp"
+
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/pipeline/options.hpp>
+
+#include <CLI/CLI.hpp>
+
+#include <cstddef>
+#include <limits>
+#include <string>
+
+namespace pdd::drivers {
+
+/// The values of the shared options.
+struct mesh_options {
+  std::string input, per_subdomain_dir, stats;
+  sizing_sources sizing; // --sizing, --background, --area-grid
+  double min_angle = pdd::mesh_criteria{}.min_angle_deg;
+  double max_area = std::numeric_limits<double>::infinity();
+  std::size_t subdomains = 0;
+  unsigned threads = 0;
+  bool quiet = false;
+};
+
+/// Registers the shared options on `app` (`threads_help` describes --threads) and returns the
+/// --output-per-subdomain option (pdd-mesh excludes other outputs with it).
+inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
+                                     const std::string& threads_help) {
+  app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
+  app.add_option("--min-angle", o.min_angle, "minimum angle in degrees (default 20.7)")
+      ->check(CLI::Range(1.0, 34.0));
+  app.add_option("--max-area", o.max_area, "maximum triangle area")->check(CLI::PositiveNumber);
+  app.add_option("--sizing", o.sizing.expression,
+                 "maximum triangle area as an expression of x and y (muParser), e.g. "
+                 "\"1e-4*(1+10*x^2)\"");
+  app.add_option("--background", o.sizing.background_mesh,
+                 "background mesh FILE.node (+ FILE.ele): area per vertex as the .node's one "
+                 "attribute, or per triangle in FILE.area")
+      ->check(CLI::ExistingFile);
+  app.add_option("--area-grid", o.sizing.area_grid, "structured area grid file (see README)")
+      ->check(CLI::ExistingFile);
+  app.add_option("--subdomains", o.subdomains,
+                 "number of subdomains (1: monolithic kernel; default: automatic)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--threads", o.threads, threads_help)->check(CLI::Range(1u, 4096u));
+  auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
+                             "write one .vtu per subdomain and an index mesh.pvtu into DIR "
+                             "(nothing is kept in memory)");
+  app.add_option("--stats", o.stats, "write statistics as JSON to this file");
+  app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  return per;
+}
+
+/// The generate_options of a run on `domain` (read and validated): the criteria, N, threads
+/// and the sizing field (see sizing_field; `sizing_kind` names it for --stats).
+/// \throws as sizing_field.
+inline pdd::generate_options generate_options_for(const mesh_options& o, const pdd::pslg& domain,
+                                                  std::string& sizing_kind) {
+  pdd::generate_options g;
+  g.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
+  g.subdomains = o.subdomains;
+  g.threads = o.threads;
+  g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
+  return g;
+}
+
+} // namespace pdd::drivers

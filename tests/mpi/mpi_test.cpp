@@ -1,0 +1,190 @@
+// The MPI backend end to end: `mpiexec -n P pdd-mesh-mpi` against the threaded
+// `pdd-mesh --output-per-subdomain` (every file bitwise equal), the statistics, and failures
+// (a throwing kernel through the library API, bad input): every rank ends, rank 0 reports once,
+// nothing is left in the output folder. ctest sets OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) (CI runs as
+// root); PDD_MPIEXEC_FLAGS holds --oversubscribe for Open MPI (P > cores here).
+#include "test_files.hpp"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace fs = std::filesystem;
+using pdd::test::run_command;
+
+std::string mpiexec(int ranks) {
+  return std::string(PDD_MPIEXEC) + " -n " + std::to_string(ranks) + " " + PDD_MPIEXEC_FLAGS + " ";
+}
+
+/// p in single quotes, for the shell.
+std::string shell_quoted(const fs::path& p) {
+  std::string q(1, '\''); // (not "'" + p.string(): GCC 12 warns falsely about it)
+  q += p.string();
+  q += '\'';
+  return q;
+}
+
+/// The options of a case: input, --max-area and --subdomains.
+struct mesh_case {
+  fs::path input;
+  std::string max_area;
+  int subdomains;
+};
+
+std::string case_options(const mesh_case& c) {
+  return shell_quoted(c.input) + " --max-area " + c.max_area + " --subdomains " +
+         std::to_string(c.subdomains) + " --quiet";
+}
+
+/// The threaded run's folder (made once per case): pdd-mesh on 2 threads.
+fs::path threaded_output(const mesh_case& c, const std::string& name) {
+  static std::map<std::string, fs::path> done;
+  const std::string key = name + "_n" + std::to_string(c.subdomains);
+  if (done.count(key)) return done[key];
+  const fs::path dir = pdd::test::fresh_dir("threaded_" + key);
+  const auto r = run_command(std::string(PDD_MESH_EXE) + " " + case_options(c) +
+                             " --threads 2 --output-per-subdomain " + shell_quoted(dir / "out") +
+                             " --stats " + shell_quoted(dir / "stats.json"));
+  EXPECT_EQ(r.code, 0) << r.output;
+  return done[key] = dir;
+}
+
+/// Expects the same file names with the same bytes in a and b; returns the number of files.
+std::size_t expect_same_files(const fs::path& a, const fs::path& b, const std::string& what) {
+  const std::vector<std::string> names = pdd::test::dir_entries(a);
+  EXPECT_EQ(names, pdd::test::dir_entries(b)) << what;
+  std::size_t same = 0;
+  for (const std::string& n : names) {
+    const bool equal = pdd::test::read_text(a / n) == pdd::test::read_text(b / n);
+    EXPECT_TRUE(equal) << what << ": " << n << " differs";
+    same += equal;
+  }
+  return same;
+}
+
+/// Runs the case on 2, 3 and 4 ranks and compares every file with the threaded run's, and the
+/// statistics that do not depend on the run (triangles, angles, ratio, histogram).
+void expect_bitwise_as_threaded(const mesh_case& c, const std::string& name) {
+  const fs::path threaded = threaded_output(c, name);
+  const auto expected = nlohmann::json::parse(pdd::test::read_text(threaded / "stats.json"));
+  for (const int ranks : {2, 3, 4}) {
+    const std::string what =
+        name + " N=" + std::to_string(c.subdomains) + " P=" + std::to_string(ranks);
+    const fs::path dir = pdd::test::fresh_dir("mpi_" + name + "_" + std::to_string(ranks));
+    const auto r = run_command(mpiexec(ranks) + PDD_MESH_MPI_EXE + " " + case_options(c) +
+                               " --threads 1 --output-per-subdomain " + shell_quoted(dir / "out") +
+                               " --stats " + shell_quoted(dir / "stats.json"));
+    ASSERT_EQ(r.code, 0) << what << "\n" << r.output;
+    // N pieces and the index, every byte the threaded run's
+    EXPECT_EQ(expect_same_files(threaded / "out", dir / "out", what),
+              static_cast<std::size_t>(c.subdomains) + 1)
+        << what;
+    const auto got = nlohmann::json::parse(pdd::test::read_text(dir / "stats.json"));
+    EXPECT_EQ(got["ranks"], ranks) << what;
+    EXPECT_EQ(got["subdomains"], c.subdomains) << what;
+    for (const char* key : {"triangles", "min_angle_deg", "max_angle_deg", "max_ratio",
+                            "max_area_ratio", "angle_histogram_deg", "shielded_triangles"})
+      EXPECT_EQ(got[key], expected[key]) << what << ": " << key;
+    std::size_t meshings = 0;
+    for (const auto& rank : got["per_rank"])
+      meshings += rank["meshings"].get<std::size_t>();
+    EXPECT_EQ(meshings, static_cast<std::size_t>(c.subdomains)) << what;
+    EXPECT_GE(got["imbalance"].get<double>(), 1.0) << what;
+  }
+}
+
+const fs::path data = fs::path(PDD_SOURCE_DIR) / "examples" / "data";
+
+TEST(MpiKey, EverySubdomainFileBitwiseAsThreaded) {
+  for (const int n : {16, 64})
+    expect_bitwise_as_threaded({data / "key.poly", "2e-3", n}, "key");
+}
+
+TEST(MpiPipe, EverySubdomainFileBitwiseAsThreaded) {
+  for (const int n : {16, 64})
+    expect_bitwise_as_threaded({data / "pipe.poly", "2e-3", n}, "pipe");
+}
+
+// Texas: input angles down to 7.29 deg, shielded (dissertation ch. 8).
+TEST(MpiSmallAngle, EverySubdomainFileBitwiseAsThreaded) {
+  const fs::path texas = pdd::test::shared_data_dir() / "texas.poly";
+  if (pdd::test::shared_data_dir().empty() || !fs::exists(texas))
+    GTEST_SKIP() << "no ../shared/data/texas.poly";
+  for (const int n : {16, 64})
+    expect_bitwise_as_threaded({texas, "400", n}, "texas");
+  const auto stats = nlohmann::json::parse(
+      pdd::test::read_text(threaded_output({texas, "400", 16}, "texas") / "stats.json"));
+  EXPECT_GT(stats["shielded_triangles"].get<std::size_t>(), 0u) << "no small angle was shielded";
+}
+
+/// pdd_mpi_throwing_mesher on the key, N = 16, into dir, failing on subdomain `fail`.
+pdd::test::command_result run_throwing(int ranks, const fs::path& dir, int fail) {
+  return run_command(mpiexec(ranks) + PDD_MPI_THROWING_MESHER_EXE + " " +
+                     shell_quoted(data / "key.poly") + " 2e-3 16 " + shell_quoted(dir) + " " +
+                     std::to_string(fail));
+}
+
+std::size_t count(const std::string& text, const std::string& what) {
+  std::size_t n = 0;
+  for (auto p = text.find(what); p != std::string::npos; p = text.find(what, p + 1))
+    ++n;
+  return n;
+}
+
+TEST(MpiFailures, ThrowingKernelEndsEveryRankWithNoOutput) {
+  for (const int ranks : {2, 3}) {
+    for (const int fail : {0, 5, 15}) {
+      const std::string what = "P=" + std::to_string(ranks) + " fail=" + std::to_string(fail);
+      const fs::path dir = pdd::test::fresh_dir("throwing");
+      const auto r = run_throwing(ranks, dir / "out", fail);
+      EXPECT_EQ(r.code, 4) << what << "\n" << r.output;
+      EXPECT_EQ(count(r.output, "error: subdomain " + std::to_string(fail) + ": injected failure"),
+                1u)
+          << what << "\n"
+          << r.output;
+      EXPECT_TRUE(pdd::test::dir_entries(dir / "out").empty()) << what << ": files left behind";
+    }
+  }
+}
+
+TEST(MpiFailures, TheSameProgramWithoutTheFailureSucceeds) {
+  const fs::path dir = pdd::test::fresh_dir("not_throwing");
+  const auto r = run_throwing(3, dir / "out", -1);
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("meshed 16 subdomains"), std::string::npos) << r.output;
+  EXPECT_EQ(pdd::test::dir_entries(dir / "out").size(), 17u);
+  // the library's files are the driver's
+  const fs::path threaded = threaded_output({data / "key.poly", "2e-3", 16}, "key");
+  EXPECT_EQ(expect_same_files(threaded / "out", dir / "out", "library API"), 17u);
+}
+
+TEST(MpiFailures, BadInputIsReportedOnceByRankZero) {
+  const fs::path dir = pdd::test::fresh_dir("bad_input");
+  const auto missing = run_command(mpiexec(3) + PDD_MESH_MPI_EXE + " " +
+                                   shell_quoted(dir / "missing.poly") + " --output-per-subdomain " +
+                                   shell_quoted(dir / "out") + " --stats " + shell_quoted(dir / "s.json"));
+  EXPECT_EQ(missing.code, 1) << missing.output;
+  EXPECT_EQ(count(missing.output, "pdd-mesh-mpi: error:"), 1u) << missing.output;
+  EXPECT_EQ(count(missing.output, "missing.poly"), 1u) << missing.output;
+  EXPECT_FALSE(fs::exists(dir / "out" / "mesh.pvtu"));
+  EXPECT_FALSE(fs::exists(dir / "s.json"));
+  // a self-intersecting domain: a geometry error, with the file name, from rank 0 only
+  const std::string bowtie = pdd::test::write_temp_file(
+      "bowtie.poly", "4 2 0 0\n1 0 0\n2 1 1\n3 1 0\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n");
+  const auto invalid = run_command(mpiexec(2) + PDD_MESH_MPI_EXE + " " + shell_quoted(bowtie) +
+                                   " --output-per-subdomain " + shell_quoted(dir / "out2"));
+  EXPECT_EQ(invalid.code, 1) << invalid.output;
+  EXPECT_EQ(count(invalid.output, "pdd-mesh-mpi: error: " + bowtie), 1u) << invalid.output;
+  EXPECT_FALSE(fs::exists(dir / "out2" / "mesh.pvtu"));
+  // usage: the output folder is required
+  const auto usage = run_command(mpiexec(2) + PDD_MESH_MPI_EXE + " " + shell_quoted(bowtie));
+  EXPECT_EQ(usage.code, 2) << usage.output;
+}
+
+} // namespace
