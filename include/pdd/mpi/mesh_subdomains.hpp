@@ -30,7 +30,7 @@ namespace pdd::mpi {
 struct rank_report {
   std::size_t meshings = 0;  ///< subdomain meshings it ran (repeated ones included)
   std::size_t triangles = 0; ///< triangles of the meshes it delivered (their last delivery)
-  double busy_seconds = 0.0; ///< kernel and check time of its meshings, summed
+  double busy_seconds = 0.0; ///< time of its meshings (kernel, check, sink), summed
 };
 
 /// Statistics of pdd::mpi::mesh_subdomains; the same on every rank.
@@ -66,7 +66,7 @@ merge_round(const std::vector<gathered_record>& records, distributed_meshing_sta
     rep.seconds += g.seconds;
     ++rep.runs;
     ++rr.meshings;
-    rr.busy_seconds += g.seconds;
+    rr.busy_seconds += g.job_seconds;
     if (!g.split_path_edges.empty()) {
       stats.meshing.interface_splits += g.split_pieces;
       failures[g.subdomain] = g.split_path_edges;

@@ -14,6 +14,7 @@
 
 #include <mpi.h>
 
+#include <chrono>
 #include <cstdint>
 #include <exception>
 #include <map>
@@ -27,7 +28,8 @@ namespace pdd::mpi::detail {
 struct job_record {
   bool here = false; ///< this rank ran the job
   std::uint64_t vertices = 0, triangles = 0, split_pieces = 0;
-  double seconds = 0.0;
+  double seconds = 0.0;     ///< kernel and check (pdd::mesh_subdomain)
+  double job_seconds = 0.0; ///< the whole job: kernel, check and delivery to the sink
   std::vector<index_t> split_path_edges; ///< non-empty: not delivered (Corollary 13 failed)
   std::exception_ptr failure;            ///< the job's exception (the kernel's or the sink's)
 };
@@ -37,7 +39,7 @@ struct gathered_record {
   index_t subdomain = 0;
   int rank = 0;
   std::uint64_t vertices = 0, triangles = 0, split_pieces = 0;
-  double seconds = 0.0;
+  double seconds = 0.0, job_seconds = 0.0;
   std::vector<index_t> split_path_edges;
   wire_error failure;
 };
@@ -81,6 +83,7 @@ private:
     job_record& rec = records_[j];
     rec.here = true;
     const index_t s = ids_[j];
+    const auto t0 = std::chrono::steady_clock::now();
     try {
       subdomain_meshing r = mesh_subdomain(dd_, s, options_, mesher_);
       rec.seconds = r.seconds;
@@ -93,6 +96,7 @@ private:
     } catch (...) {
       rec.failure = std::current_exception();
     }
+    rec.job_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
 
   /// The sink's consume; its exceptions become pdd::meshing_error(s, ...) as in
@@ -119,6 +123,7 @@ private:
       w.put(rec.triangles);
       w.put(rec.split_pieces);
       w.put(rec.seconds);
+      w.put(rec.job_seconds);
       w.put(static_cast<std::uint64_t>(rec.split_path_edges.size()));
       for (const index_t e : rec.split_path_edges)
         w.put(e);
@@ -142,6 +147,7 @@ private:
     g.triangles = in.get<std::uint64_t>();
     g.split_pieces = in.get<std::uint64_t>();
     g.seconds = in.get<double>();
+    g.job_seconds = in.get<double>();
     g.split_path_edges.resize(static_cast<std::size_t>(in.get<std::uint64_t>()));
     for (index_t& e : g.split_path_edges)
       e = in.get<index_t>();
