@@ -12,7 +12,7 @@
 #include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/meshing/meshing_statistics.hpp>
 #include <pdd/mpi/collectively.hpp>
-#include <pdd/mpi/detail/meshing_ranks.hpp>
+#include <pdd/mpi/detail/meshing_rank.hpp>
 #include <pdd/mpi/detail/wire.hpp>
 
 #include <mpi.h>

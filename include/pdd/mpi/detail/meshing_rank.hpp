@@ -1,4 +1,4 @@
-/// \file meshing_ranks.hpp
+/// \file meshing_rank.hpp
 /// Implementation of pdd::mpi::mesh_subdomains: one rank's part of a meshing round (its jobs
 /// and what they did) and the all-gather that tells every rank what every job did.
 #pragma once
@@ -52,9 +52,7 @@ public:
   meshing_rank(MPI_Comm comm, const decoupled_decomposition& dd, const meshing_options& options,
                const M& mesher, S& sink, unsigned threads)
       : comm_(comm), dd_(dd), options_(options), mesher_(mesher), sink_(sink),
-        dispatcher_(comm, threads) {
-    check(MPI_Comm_rank(comm_, &rank_), "MPI_Comm_rank");
-  }
+        dispatcher_(comm, threads) {}
 
   /// Meshes the subdomains `ids` over all ranks (collective, the same ids everywhere) and
   /// returns every job's record, in the order of ids, on every rank.
@@ -155,7 +153,6 @@ private:
   }
 
   MPI_Comm comm_;
-  int rank_ = 0;
   const decoupled_decomposition& dd_;
   const meshing_options& options_;
   const M& mesher_;
