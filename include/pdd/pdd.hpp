@@ -13,7 +13,7 @@
 ///   6: io, meshing
 ///   7: mesh
 ///   8: pipeline
-///   9: generate
+///   9: generate, mpi (pdd/mpi/: MPI programs only, not included here; target pdd::mpi)
 ///   10: pdd
 #pragma once
 
@@ -45,6 +45,7 @@
 #include <pdd/kernels/cgal/criteria.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/parallel/parallel_for.hpp>
+#include <pdd/parallel/schedule_order.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/bisection_metrics.hpp>
@@ -100,6 +101,7 @@
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/io/vtu.hpp>
 #include <pdd/io/write_mesh.hpp>
+#include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/meshing/mesh_subdomains.hpp>
 
 // level 7: mesh
