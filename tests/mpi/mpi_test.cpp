@@ -166,9 +166,10 @@ TEST(MpiFailures, TheSameProgramWithoutTheFailureSucceeds) {
 
 TEST(MpiFailures, BadInputIsReportedOnceByRankZero) {
   const fs::path dir = pdd::test::fresh_dir("bad_input");
-  const auto missing = run_command(mpiexec(3) + PDD_MESH_MPI_EXE + " " +
-                                   shell_quoted(dir / "missing.poly") + " --output-per-subdomain " +
-                                   shell_quoted(dir / "out") + " --stats " + shell_quoted(dir / "s.json"));
+  const auto missing =
+      run_command(mpiexec(3) + PDD_MESH_MPI_EXE + " " + shell_quoted(dir / "missing.poly") +
+                  " --output-per-subdomain " + shell_quoted(dir / "out") + " --stats " +
+                  shell_quoted(dir / "s.json"));
   EXPECT_EQ(missing.code, 1) << missing.output;
   EXPECT_EQ(count(missing.output, "pdd-mesh-mpi: error:"), 1u) << missing.output;
   EXPECT_EQ(count(missing.output, "missing.poly"), 1u) << missing.output;

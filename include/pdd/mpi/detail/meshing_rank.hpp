@@ -28,8 +28,8 @@ namespace pdd::mpi::detail {
 struct job_record {
   bool here = false; ///< this rank ran the job
   std::uint64_t vertices = 0, triangles = 0, split_pieces = 0;
-  double seconds = 0.0;     ///< kernel and check (pdd::mesh_subdomain)
-  double job_seconds = 0.0; ///< the whole job: kernel, check and delivery to the sink
+  double seconds = 0.0;                  ///< kernel and check (pdd::mesh_subdomain)
+  double job_seconds = 0.0;              ///< the whole job: kernel, check and delivery to the sink
   std::vector<index_t> split_path_edges; ///< non-empty: not delivered (Corollary 13 failed)
   std::exception_ptr failure;            ///< the job's exception (the kernel's or the sink's)
 };
