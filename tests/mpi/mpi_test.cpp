@@ -123,6 +123,36 @@ TEST(MpiSmallAngle, EverySubdomainFileBitwiseAsThreaded) {
   EXPECT_GT(stats["shielded_triangles"].get<std::size_t>(), 0u) << "no small angle was shielded";
 }
 
+/// Without --subdomains: pdd-mesh-mpi on 2 ranks of 1 thread plans the N that pdd-mesh plans on
+/// 2 threads, and writes the same files; returns that N.
+int expect_automatic_plan_as_threaded(const fs::path& input, const std::string& max_area) {
+  const fs::path dir = pdd::test::fresh_dir("automatic");
+  const std::string options = shell_quoted(input) + " --max-area " + max_area + " -q";
+  const auto threaded = run_command(
+      std::string(PDD_MESH_EXE) + " " + options + " --threads 2 --output-per-subdomain " +
+      shell_quoted(dir / "threaded") + " --stats " + shell_quoted(dir / "threaded.json"));
+  EXPECT_EQ(threaded.code, 0) << threaded.output;
+  const auto mpi = run_command(mpiexec(2) + PDD_MESH_MPI_EXE + " " + options +
+                               " --threads 1 --output-per-subdomain " + shell_quoted(dir / "mpi") +
+                               " --stats " + shell_quoted(dir / "mpi.json"));
+  EXPECT_EQ(mpi.code, 0) << mpi.output;
+  const auto planned = nlohmann::json::parse(pdd::test::read_text(dir / "threaded.json"));
+  const int n = planned["subdomains"].get<int>();
+  EXPECT_EQ(nlohmann::json::parse(pdd::test::read_text(dir / "mpi.json"))["subdomains"], n);
+  EXPECT_EQ(expect_same_files(dir / "threaded", dir / "mpi", "automatic N"),
+            static_cast<std::size_t>(n) + 1);
+  return n;
+}
+
+// A small key: the automatic plan is the whole domain (N = 1), meshed by rank 0 alone.
+TEST(MpiKey, AutomaticPlanOfOneSubdomainAsThreaded) {
+  EXPECT_EQ(expect_automatic_plan_as_threaded(data / "key.poly", "2e-3"), 1);
+}
+
+TEST(MpiPipe, AutomaticPlanAsThreadedOnAllRanksThreads) {
+  EXPECT_GT(expect_automatic_plan_as_threaded(data / "pipe.poly", "2e-5"), 1);
+}
+
 /// pdd_mpi_throwing_mesher on the key, N = 16, into dir, failing on subdomain `fail`.
 pdd::test::command_result run_throwing(int ranks, const fs::path& dir, int fail) {
   return run_command(mpiexec(ranks) + PDD_MPI_THROWING_MESHER_EXE + " " +
