@@ -4,6 +4,15 @@
 //   pdd-decompose INPUT.poly --subdomains N [--min-separator-angle DEG] [--algorithm 1|2]
 //                 [--threads T] [--no-smoothing] [--max-refinement-levels L]
 //                 [--max-area A] [--svg FILE.svg] [--stats FILE.json] [-o FILE.pdd] [--quiet]
+//                 [--vertex-weights | --node-weights FILE.node | --grid-weights FILE]
+//                 [--uniform-factor u] [--weight-factor a] [--interpolation p]
+//                 [--area-function EXPR | --area-mesh FILE.node | --area-grid FILE]
+//                 [--area-ratio R]
+//
+// Graded MADD (dissertation 4.4, include/pdd/madd/graded_weights.hpp): with a weight source
+// the heaviest subdomain (u * area + a * density weight) is split until N subdomains exist;
+// with a required-area source the subdomain of largest area / required area is split until
+// no ratio exceeds R (--subdomains then only caps the count and may be left out).
 //
 // --max-area A also shields the small input angles and builds the decoupling path pdd-mesh
 // would build for that area bound, and reports k, the split points and the shielded triangles
@@ -17,6 +26,7 @@
 // which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
 // be decomposed, 2 usage, 3 the decomposition failed its own check, 4 internal error.
 #include "exit_code.hpp"
+#include "graded_options.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/geometry/properties.hpp>
@@ -47,6 +57,7 @@ struct cli_options {
   pdd::madd_options madd;
   bool no_smoothing = false, quiet = false;
   double max_area = 0.0; ///< > 0: also plan the decoupling path for this area bound
+  pdd::drivers::graded_sources graded;
 };
 
 /// Everything one pdd-decompose run produces.
@@ -57,6 +68,7 @@ struct decompose_run {
   pdd::decomposition_statistics st;
   std::optional<pdd::generate_statistics> path; ///< the decoupling path planned for --max-area
   pdd::decomposition_report check;
+  pdd::drivers::graded_run graded;
   double total_s = 0.0;
 };
 
@@ -110,6 +122,8 @@ nlohmann::json stats_json(const cli_options& o, const decompose_run& r) {
     j["split_points"] = r.path->split_points;
     j["shielded_triangles"] = r.path->shielded_triangles;
   }
+  if (o.graded.density() || o.graded.area())
+    j["graded"] = pdd::drivers::graded_json(o.graded, r.graded, r.d);
   j["peak_rss_mib"] = pdd::peak_rss_mib();
   return j;
 }
@@ -120,6 +134,20 @@ void print_summary(const cli_options& o, const decompose_run& r) {
               "%.3f, separator length %.6g, %.3f s\n",
               r.st.subdomains, r.st.min_separator_angle_deg, r.st.max_area_over_mean,
               r.st.separator_length_total, r.st.time_s);
+  if (o.graded.density() || o.graded.area()) {
+    const nlohmann::json g = pdd::drivers::graded_json(o.graded, r.graded, r.d);
+    if (r.graded.weights)
+      std::printf("pdd-decompose: graded (%s): density weight per subdomain %.6g..%.6g, "
+                  "u*area + a*weight %.6g..%.6g\n",
+                  g["mode"].get<std::string>().c_str(), g["weight_min"].get<double>(),
+                  g["weight_max"].get<double>(), g["priority_min"].get<double>(),
+                  g["priority_max"].get<double>());
+    else
+      std::printf("pdd-decompose: graded (area ratio): area / required area per subdomain "
+                  "%.4g..%.4g (bound %g)\n",
+                  g["area_ratio_min"].get<double>(), g["area_ratio_max"].get<double>(),
+                  o.graded.area_ratio);
+  }
   if (r.path)
     std::printf("pdd-decompose: decoupling path for max area %g: k %.6g, %zu split points "
                 "(about %.0f triangles planned), %zu shielded triangles\n",
@@ -135,6 +163,7 @@ int run(cli_options o) {
   r.domain = pdd::read_poly(o.input);
   r.props = pdd::analyze(r.domain); // validates
   o.madd.smoothing = !o.no_smoothing;
+  r.graded = pdd::drivers::set_split_policy(o.graded, r.domain, o.madd);
   if (!o.quiet && pdd::stderr_is_terminal())
     std::fprintf(stderr, "\r\033[Kpdd-decompose: decomposing into %zu subdomains",
                  o.madd.subdomains);
@@ -164,9 +193,12 @@ int main(int argc, char** argv) {
   cli_options o;
   CLI::App app{"pdd-decompose: Medial Axis Domain Decomposition of a Triangle .poly domain"};
   app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
-  app.add_option("-n,--subdomains", o.madd.subdomains, "number of subdomains N")
-      ->required()
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  o.madd.subdomains = 0;
+  auto* subdomains =
+      app.add_option("-n,--subdomains", o.madd.subdomains,
+                     "number of subdomains N (required unless a required-area source is "
+                     "given; then the most subdomains made)")
+          ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
   app.add_option("--min-separator-angle", o.madd.min_separator_angle_deg,
                  "Phi0: smallest angle a separator may form, degrees (default 60; at least 60 "
                  "with --max-area)")
@@ -187,8 +219,16 @@ int main(int argc, char** argv) {
   app.add_option("--svg", o.svg, "draw the domain and the separators to this SVG file");
   app.add_option("--stats", o.stats, "write statistics as JSON to this file");
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
+  pdd::drivers::add_graded_options(app, o.graded);
   try {
     app.parse(argc, argv);
+    if (!o.graded.area() && subdomains->count() == 0)
+      throw CLI::RequiredError("--subdomains (or a required-area source: --area-function, "
+                               "--area-mesh, --area-grid)");
+    if (o.graded.area() && subdomains->count() == 0) o.madd.subdomains = std::size_t{1} << 20;
+    if ((o.graded.density() || o.graded.area()) && o.max_area > 0.0)
+      throw CLI::ValidationError("--max-area", "plans the uniform decoupling path; it does not "
+                                               "combine with the graded MADD options");
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }

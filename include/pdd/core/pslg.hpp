@@ -29,6 +29,13 @@ struct region {
 struct pslg {
   std::vector<point> vertices;
   std::vector<int> vertex_markers; ///< same size as vertices
+  /// Triangle's vertex attributes (the .poly/.node `<#attributes>` columns): this many per
+  /// vertex, in vertex_attributes vertex by vertex (vertex v's attribute k at
+  /// v * vertex_attribute_count + k). The graded MADD (dissertation 4.4) reads the first as a
+  /// density weight; the rest of pdd carries them unchanged. add_vertex leaves them alone:
+  /// keep the two in step when both are used.
+  std::size_t vertex_attribute_count = 0;
+  std::vector<double> vertex_attributes;
   std::vector<segment> segments;
   std::vector<point> holes;
   std::vector<region> regions;
@@ -54,7 +61,8 @@ struct pslg {
       add_vertex(p, marker);
       ++n;
     }
-    for (index_t i = 0; i < n; ++i) add_segment(first + i, first + (i + 1) % n, marker);
+    for (index_t i = 0; i < n; ++i)
+      add_segment(first + i, first + (i + 1) % n, marker);
     return first;
   }
 };

@@ -3,11 +3,11 @@
 /// pdd::write_poly (bit-exact writer). Format: https://www.cs.cmu.edu/~quake/triangle.poly.html
 #pragma once
 
+#include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/io/atomic_file.hpp>
 #include <pdd/io/detail/poly.hpp>
 #include <pdd/io/detail/text.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/core/pslg.hpp>
-#include <pdd/io/atomic_file.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -23,10 +23,11 @@ namespace pdd {
 /// line, blank lines are skipped, each record is one line.
 ///  - `<#vertices> <dimension=2> <#attributes> <#boundary markers 0|1>`, then the vertex
 ///    records `<id> <x> <y> [attributes] [marker]`. Ids start at 0 or 1 (the first record
-///    decides, as in Triangle) and must be consecutive. Attributes are read and dropped;
-///    missing markers are 0. A vertex count of 0 means the vertices are in the sibling .node
-///    file `<dir_for_node_file or the directory of filename_for_messages>/<stem>.node`, read
-///    with the same rules (the rest of the .node file is ignored, as in Triangle).
+///    decides, as in Triangle) and must be consecutive. Attributes are kept in
+///    pslg::vertex_attributes (vertex_attribute_count per vertex); missing markers are 0. A vertex
+///    count of 0 means the vertices are in the sibling .node file `<dir_for_node_file or the
+///    directory of filename_for_messages>/<stem>.node`, read with the same rules (the rest of the
+///    .node file is ignored, as in Triangle).
 ///  - `<#segments> <#boundary markers 0|1>`, then `<id> <endpoint> <endpoint> [marker]`.
 ///  - `<#holes>`, then `<id> <x> <y>`.
 ///  - optionally `<#regions>`, then `<id> <x> <y> <attribute> [<maximum area>]` (a missing
@@ -61,14 +62,17 @@ inline pslg read_poly(const std::filesystem::path& path) {
 
 namespace detail {
 
-/// Writes g in .poly form to `os` (1-based ids, one vertex and one segment marker column,
-/// the regions section only when g has regions).
+/// Writes g in .poly form to `os` (1-based ids, the vertex attributes, one vertex and one
+/// segment marker column, the regions section only when g has regions).
 inline void write_poly_stream(std::ostream& os, const pslg& g) {
   text_sink out(os);
   out.put("# pdd .poly: vertices <#> <dim> <#attributes> <#markers>\n");
-  out.integer(g.vertices.size()).put(" 2 0 1\n");
+  const std::size_t na = g.vertex_attribute_count;
+  out.integer(g.vertices.size()).put(" 2 ").integer(na).put(" 1\n");
   for (std::size_t i = 0; i < g.vertices.size(); ++i) {
     out.integer(i + 1).put(' ').num(g.vertices[i].x).put(' ').num(g.vertices[i].y).put(' ');
+    for (std::size_t a = 0; a < na; ++a)
+      out.num(g.vertex_attributes[i * na + a]).put(' ');
     out.integer(g.vertex_markers.empty() ? 0 : g.vertex_markers[i]).put('\n');
   }
   out.put("# segments <#> <#markers>\n").integer(g.segments.size()).put(" 1\n");
@@ -99,6 +103,10 @@ inline void check_writable(const pslg& g, const std::filesystem::path& path) {
     throw error(where + "the PSLG has no vertices (a .poly with 0 vertices refers to a .node)");
   if (!g.vertex_markers.empty() && g.vertex_markers.size() != g.vertices.size())
     throw error(where + "vertex_markers and vertices differ in size");
+  if (g.vertex_attributes.size() != g.vertices.size() * g.vertex_attribute_count)
+    throw error(where + "vertex_attributes does not hold vertex_attribute_count values per vertex");
+  for (const double a : g.vertex_attributes)
+    if (!std::isfinite(a)) throw error(where + "a vertex attribute is NaN or infinite");
   const auto finite = [](point p) { return std::isfinite(p.x) && std::isfinite(p.y); };
   for (std::size_t i = 0; i < g.vertices.size(); ++i)
     if (!finite(g.vertices[i]))
@@ -118,11 +126,11 @@ inline void check_writable(const pslg& g, const std::filesystem::path& path) {
 
 } // namespace detail
 
-/// Writes a PSLG as a Triangle .poly file, atomically. Coordinates, regional attributes and
-/// areas are written in the shortest form that reads back to the same bits (std::to_chars), so
-/// read_poly(write_poly(g)) == g bit for bit (vertex_markers are written as 0 when empty).
-/// Ids are 1-based, as Triangle writes them.
-/// \throws pdd::error naming the path when g has no vertices, mismatched marker sizes, a
+/// Writes a PSLG as a Triangle .poly file, atomically. Coordinates, vertex attributes,
+/// regional attributes and areas are written in the shortest form that reads back to the same bits
+/// (std::to_chars), so read_poly(write_poly(g)) == g bit for bit (vertex_markers are written as 0
+/// when empty). Ids are 1-based, as Triangle writes them. \throws pdd::error naming the path when g
+/// has no vertices, mismatched marker sizes, a
 ///   segment endpoint out of range or a non-finite number, or when writing fails (nothing is
 ///   left behind then; see write_file_atomically).
 /// Complexity: linear. Thread-safety: reentrant.

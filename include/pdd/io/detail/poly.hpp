@@ -83,7 +83,9 @@ private:
 struct vertex_section {
   std::vector<point> vertices;
   std::vector<int> markers;
-  long long first_id = 1; ///< 0 or 1, from the first vertex record (Triangle's rule)
+  std::size_t attribute_count = 0; ///< attributes per vertex
+  std::vector<double> attributes;  ///< attribute_count per vertex, vertex by vertex
+  long long first_id = 1;          ///< 0 or 1, from the first vertex record (Triangle's rule)
 };
 
 /// Header of a vertex section.
@@ -209,11 +211,13 @@ public:
   }
 
   /// Reads `h.count` records "<id> <x> <y> [attributes] [marker]"; ids consecutive from 0 or 1
-  /// (decided by the first record, as Triangle does). Attributes are checked and dropped.
+  /// (decided by the first record, as Triangle does). Attributes are checked and kept.
   vertex_section vertex_records(const vertex_header& h) {
     vertex_section s;
     s.vertices.reserve(h.count);
     s.markers.reserve(h.count);
+    s.attribute_count = h.attributes;
+    s.attributes.reserve(h.count * h.attributes);
     const std::size_t nf = 3 + h.attributes + h.markers;
     for (std::size_t i = 0; i < h.count; ++i) {
       const auto rec = [&] {
@@ -235,7 +239,7 @@ public:
       const double x = real(1, "the vertex x coordinate");
       const double y = real(2, "the vertex y coordinate");
       for (std::size_t a = 0; a < h.attributes; ++a)
-        (void)real(3 + a, "a vertex attribute");
+        s.attributes.push_back(real(3 + a, "a vertex attribute"));
       const int m = h.markers ? marker(3 + h.attributes, "the vertex boundary marker") : 0;
       s.vertices.push_back({x, y});
       s.markers.push_back(m);
@@ -388,6 +392,8 @@ inline pslg parse_poly_text(std::string_view text, const std::string& file,
   vertex_section vs = read_poly_vertices(p, file, node_dir);
   g.vertices = std::move(vs.vertices);
   g.vertex_markers = std::move(vs.markers);
+  g.vertex_attribute_count = vs.attribute_count;
+  g.vertex_attributes = std::move(vs.attributes);
   const long long lo = vs.first_id;
   const long long hi = lo + static_cast<long long>(g.vertices.size()) - 1;
   read_poly_segments(p, lo, hi, g);

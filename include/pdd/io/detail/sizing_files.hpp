@@ -22,22 +22,29 @@ struct node_with_areas {
   long long first_id = 1;
 };
 
-/// Reads a .node file keeping the first vertex attribute as the area at the vertex.
+/// What the one vertex attribute of a .node file means.
+enum class node_value { area, weight };
+
+/// Reads a .node file keeping the first vertex attribute as the area at the vertex (> 0;
+/// optional) or as a density weight (>= 0, finite; required).
 /// \throws pdd::input_error (file:line) as the .poly reader, and for more than one attribute.
-inline node_with_areas parse_area_node(std::string_view text, const std::string& file) {
+inline node_with_areas parse_area_node(std::string_view text, const std::string& file,
+                                       node_value kind = node_value::area) {
   triangle_file_parser p(text, file);
   const vertex_header h = p.vertex_section_header();
+  const bool area = kind == node_value::area;
   if (h.count == 0) p.fail("expected at least one vertex in the .node file, found 0");
-  if (h.attributes > 1)
-    p.fail("expected at most 1 vertex attribute (the area at the vertex), found " +
+  if (h.attributes > 1 || (!area && h.attributes != 1))
+    p.fail(std::string("expected ") + (area ? "at most" : "exactly") + " 1 vertex attribute (the " +
+           (area ? "area at" : "density weight of") + " the vertex), found " +
            std::to_string(h.attributes));
   node_with_areas r;
   const std::size_t nf = 3 + h.attributes + h.markers;
   for (std::size_t i = 0; i < h.count; ++i) {
     const auto rec = [&] {
       return "vertex " + std::to_string(i + 1) + " of " + std::to_string(h.count) +
-             " '<id> <x> <y>" + (h.attributes ? " <area>" : "") + (h.markers ? " <marker>" : "") +
-             "'";
+             " '<id> <x> <y>" + (h.attributes ? (area ? " <area>" : " <weight>") : "") +
+             (h.markers ? " <marker>" : "") + "'";
     };
     p.next(rec);
     p.expect_fields(nf, nf, rec);
@@ -51,9 +58,11 @@ inline node_with_areas parse_area_node(std::string_view text, const std::string&
     r.vertices.push_back(
         {p.real(1, "the vertex x coordinate"), p.real(2, "the vertex y coordinate")});
     if (h.attributes == 1) {
-      const double a = p.real(3, "the area at the vertex");
-      if (!(a > 0.0))
+      const double a = p.real(3, area ? "the area at the vertex" : "the vertex weight");
+      if (area && !(a > 0.0))
         p.fail("expected the area at the vertex to be > 0, found " + std::to_string(a));
+      if (!area && !(a >= 0.0))
+        p.fail("expected the vertex weight to be >= 0, found " + std::to_string(a));
       r.areas.push_back(a);
     }
     if (h.markers) (void)p.marker(3 + h.attributes, "the vertex boundary marker");
@@ -136,8 +145,11 @@ struct area_grid_data {
   std::vector<double> values;
 };
 
-/// Parses pdd's area grid format (see pdd::read_area_grid).
-inline area_grid_data parse_area_grid(std::string_view text, const std::string& file) {
+/// Parses pdd's area grid format (see pdd::read_area_grid); with node_value::weight the
+/// values are density weights (>= 0) instead of areas (> 0).
+inline area_grid_data parse_area_grid(std::string_view text, const std::string& file,
+                                      node_value kind = node_value::area) {
+  const bool area = kind == node_value::area;
   triangle_file_parser p(text, file);
   const auto header = [] { return "the grid header '<nx> <ny> <x0> <y0> <dx> <dy>'"; };
   p.next(header);
@@ -156,15 +168,16 @@ inline area_grid_data parse_area_grid(std::string_view text, const std::string& 
   for (std::size_t j = 0; j < g.ny; ++j) {
     const auto rec = [&] {
       return "row " + std::to_string(j + 1) + " of " + std::to_string(g.ny) + " (y = y0 + " +
-             std::to_string(j) + " dy, " + std::to_string(g.nx) + " areas)";
+             std::to_string(j) + " dy, " + std::to_string(g.nx) + (area ? " areas)" : " weights)");
     };
     p.next(rec);
     p.expect_fields(g.nx, g.nx, rec);
     for (std::size_t i = 0; i < g.nx; ++i) {
-      const double a = p.real(i, "an area");
-      if (!(a > 0.0))
-        p.fail("expected the area at node (" + std::to_string(i) + ", " + std::to_string(j) +
-               ") to be > 0, found " + std::to_string(a));
+      const double a = p.real(i, area ? "an area" : "a weight");
+      if (area ? !(a > 0.0) : !(a >= 0.0))
+        p.fail(std::string("expected the ") + (area ? "area" : "weight") + " at node (" +
+               std::to_string(i) + ", " + std::to_string(j) + ") to be " + (area ? "> 0" : ">= 0") +
+               ", found " + std::to_string(a));
       g.values.push_back(a);
     }
   }
