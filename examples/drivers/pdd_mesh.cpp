@@ -324,6 +324,7 @@ int run(const cli_options& o) {
   if (r.mesh && !o.output.empty()) pdd::write_mesh(o.output, *r.mesh);
   if (r.mesh && !o.svg.empty()) {
     pdd::svg_options so;
+    so.shade_by_area = bool(r.options.sizing); // a graded mesh: show the grading
     if (!o.svg_window.empty())
       so.window =
           pdd::svg_window{o.svg_window[0], o.svg_window[1], o.svg_window[2], o.svg_window[3]};

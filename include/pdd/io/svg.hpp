@@ -84,6 +84,7 @@ inline void draw_mesh(svg_canvas& c, const triangle_mesh& m, const svg_options& 
         c.end_path();
       }
     }
+    if (o.shade_by_area) shade_triangles_by_area(c, m, o);
     std::vector<std::uint64_t> edges;
     edges.reserve(3 * m.triangles.size());
     for (const auto& t : m.triangles)
@@ -158,7 +159,8 @@ inline void write_svg(const std::filesystem::path& path, const pslg& g,
 /// zoomed inset below the picture showing the triangles of the window (automatic for a large
 /// mesh: about options.inset_triangles triangles on the separator nearest the centre), marked
 /// by a red frame on the picture. options.legend adds the triangle, vertex and subdomain
-/// counts and the smallest angle.
+/// counts and the smallest angle; options.shade_by_area shades the triangles by log(area)
+/// (darkest smallest) and names the area range in the legend.
 /// \throws pdd::error naming the path for an inconsistent mesh, an empty window or a failed
 ///   write.
 /// Complexity: O(t log t). Thread-safety: reentrant.
@@ -187,9 +189,11 @@ inline void write_svg(const std::filesystem::path& path, const triangle_mesh& me
     if (!large)
       c.segments(detail::separator_segments(mesh, edges), "#000000", options.segment_stroke_px);
     if (w) detail::draw_inset(out, c, *inset, mesh, edges, *w, options);
-    if (options.legend)
-      detail::legend_box(out, options.margin_px + 4, options.margin_px + 4,
-                         detail::legend_lines(mesh));
+    if (options.legend) {
+      std::vector<std::string> lines = detail::legend_lines(mesh);
+      if (options.shade_by_area && !large) lines.push_back(detail::shading_legend(mesh));
+      detail::legend_box(out, options.margin_px + 4, options.margin_px + 4, lines);
+    }
     c.close();
     out.flush();
   });

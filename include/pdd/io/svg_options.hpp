@@ -29,6 +29,11 @@ struct svg_options {
   double vertex_radius_px = 1.5;      ///< PSLG vertices (0: not drawn)
   double hole_size_px = 4.0;          ///< half size of the hole crosses
   int precision = 2;                  ///< digits after the point in pixel coordinates
+  /// Mesh pictures drawn triangle by triangle: shade each triangle over its subdomain's fill
+  /// by log(area), the smallest triangles darkest (area_shades steps from the mesh's smallest
+  /// to its largest area; the legend gives the range): the grading of a graded mesh at a glance.
+  bool shade_by_area = false;
+  int area_shades = 8; ///< steps of the shading (>= 2)
 };
 
 } // namespace pdd

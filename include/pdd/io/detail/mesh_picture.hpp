@@ -13,6 +13,8 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <limits>
 #include <map>
 #include <string>
 #include <utility>
@@ -207,6 +209,55 @@ inline std::vector<std::string> legend_lines(const triangle_mesh& m) {
               " vertices",
           std::to_string(std::max<std::size_t>(1, markers.size())) + " subdomain(s)",
           "smallest angle " + angle + " deg"};
+}
+
+/// The smallest and largest triangle area of m (0, 0 without triangles).
+inline std::pair<double, double> area_extremes(const triangle_mesh& m) {
+  if (m.triangles.empty()) return {0.0, 0.0};
+  double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
+  for (const auto& t : m.triangles) {
+    const double a = triangle_area(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
+    lo = std::min(lo, a);
+    hi = std::max(hi, a);
+  }
+  return {lo, hi};
+}
+
+/// Shades every triangle by log(area) in o.area_shades steps: black at opacity 0.5 for the
+/// smallest step down to none for the largest, one path per step.
+inline void shade_triangles_by_area(svg_canvas& c, const triangle_mesh& m, const svg_options& o) {
+  const auto [lo, hi] = area_extremes(m);
+  const int steps = std::max(2, o.area_shades);
+  if (!(lo > 0.0) || !(hi > lo)) return;
+  const double span = std::log(hi / lo);
+  std::vector<std::vector<std::size_t>> by_step(static_cast<std::size_t>(steps));
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& tr = m.triangles[t];
+    const double a = triangle_area(m.vertices[tr[0]], m.vertices[tr[1]], m.vertices[tr[2]]);
+    const double u = a > 0.0 ? std::log(a / lo) / span : 0.0;
+    by_step[static_cast<std::size_t>(std::clamp(u * steps, 0.0, steps - 1.0))].push_back(t);
+  }
+  for (int k = 0; k + 1 < steps; ++k) {
+    if (by_step[k].empty()) continue;
+    std::string opacity;
+    append_fixed(opacity, 0.5 * (1.0 - double(k) / double(steps - 1)), 3);
+    c.begin_path("fill=\"#000000\" fill-opacity=\"" + opacity + "\" stroke=\"none\"");
+    for (const std::size_t t : by_step[k]) {
+      c.move_to(m.vertices[m.triangles[t][0]]);
+      c.line_to(m.vertices[m.triangles[t][1]]);
+      c.line_to(m.vertices[m.triangles[t][2]]);
+    }
+    c.end_path();
+  }
+}
+
+/// The legend line of the area shading.
+inline std::string shading_legend(const triangle_mesh& m) {
+  const auto [lo, hi] = area_extremes(m);
+  char buf[160];
+  std::snprintf(buf, sizeof buf, "shade: triangle area %.3g (darkest) to %.3g (none), log scale",
+                lo, hi);
+  return buf;
 }
 
 /// Writes text lines in a white box at pixel (x, y).
