@@ -75,7 +75,8 @@ TEST(MeshPictures, ShadeByAreaShowsTheGrading) {
   m.vertices[6] = {0.2, 0.2}; // subdomain 0: areas 0.1, 0.4, 0.4, 0.1; subdomain 1: 0.25 each
   pdd::svg_options o;
   pdd::write_svg(dir / "plain.svg", m, o);
-  EXPECT_EQ(pdd::test::read_text(dir / "plain.svg").find("fill-opacity"), std::string::npos);
+  const std::string shade = "fill=\"#000000\" fill-opacity=";
+  EXPECT_EQ(pdd::test::read_text(dir / "plain.svg").find(shade), std::string::npos);
   o.shade_by_area = true;
   pdd::write_svg(dir / "s.svg", m, o);
   const std::string s = pdd::test::read_text(dir / "s.svg");
@@ -84,14 +85,14 @@ TEST(MeshPictures, ShadeByAreaShowsTheGrading) {
   // 8 steps over log(0.4 / 0.1): 0.1 in step 0 (opacity 0.5), 0.25 in step 5 (0.5 * 2 / 7),
   // 0.4 in the last step (not shaded)
   const auto triangles_at = [&](const std::string& opacity) {
-    const std::size_t p = s.find("fill-opacity=\"" + opacity + "\"");
+    const std::size_t p = s.find(shade + "\"" + opacity + "\"");
     if (p == std::string::npos) return std::size_t{0};
     const std::size_t d = s.find(" d=\"", p) + 4;
     return occurrences(s.substr(d, s.find('"', d) - d), "M");
   };
   EXPECT_EQ(triangles_at("0.500"), 2u);
   EXPECT_EQ(triangles_at("0.143"), 4u);
-  EXPECT_EQ(occurrences(s, "fill-opacity"), 2u);
+  EXPECT_EQ(occurrences(s, shade), 2u);
   EXPECT_NE(s.find("shade: triangle area 0.1 (darkest) to 0.4 (none), log scale"),
             std::string::npos);
 }
