@@ -69,9 +69,13 @@ inline std::vector<double> first_vertex_attribute(const pslg& g) {
 ///    not scaled by p);
 ///  - every other point lies on an interface: the subdomain's loop is walked, and each run of
 ///    interface points between two boundary points A (before) and B (after) gets
-///    p (W_A + s (W_B - W_A)), s the arc length from A along the run over the run's length;
-///    on a loop that touches the input boundary nowhere the interface points weigh 0.
+///    p (W_A + s (W_B - W_A)), s the arc length from A along the run over the run's length
+///    (A = B on a loop with one boundary point); on a loop that touches the input boundary
+///    nowhere the interface points weigh 0.
 /// So the weight is a pure function of the subdomain's points, and p = 0 gives interfaces 0.
+/// A point shared by several subdomains counts for each: a subdomain on a heavy boundary stays
+/// heavy however small it gets, so the splits concentrate along that boundary (p > 0 spreads
+/// them inwards); madd_options::subdomains (N) ends the decomposition.
 /// Thread-safety: const and shared; copies share the data.
 class boundary_vertex_weights {
 public:
