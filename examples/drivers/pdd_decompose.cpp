@@ -187,6 +187,19 @@ int run(cli_options o) {
   return ok;
 }
 
+/// The usage rules CLI11 cannot state: --subdomains is required unless a required-area source
+/// is given (then it caps the count, by default at 2^20); the graded options do not combine
+/// with --max-area. \throws CLI::ParseError.
+void check_usage(cli_options& o, bool subdomains_given) {
+  if (!o.graded.area() && !subdomains_given)
+    throw CLI::RequiredError("--subdomains (or a required-area source: --area-function, "
+                             "--area-mesh, --area-grid)");
+  if (o.graded.area() && !subdomains_given) o.madd.subdomains = std::size_t{1} << 20;
+  if ((o.graded.density() || o.graded.area()) && o.max_area > 0.0)
+    throw CLI::ValidationError("--max-area", "plans the uniform decoupling path; it does not "
+                                             "combine with the graded MADD options");
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -222,13 +235,7 @@ int main(int argc, char** argv) {
   pdd::drivers::add_graded_options(app, o.graded);
   try {
     app.parse(argc, argv);
-    if (!o.graded.area() && subdomains->count() == 0)
-      throw CLI::RequiredError("--subdomains (or a required-area source: --area-function, "
-                               "--area-mesh, --area-grid)");
-    if (o.graded.area() && subdomains->count() == 0) o.madd.subdomains = std::size_t{1} << 20;
-    if ((o.graded.density() || o.graded.area()) && o.max_area > 0.0)
-      throw CLI::ValidationError("--max-area", "plans the uniform decoupling path; it does not "
-                                               "combine with the graded MADD options");
+    check_usage(o, subdomains->count() > 0);
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }

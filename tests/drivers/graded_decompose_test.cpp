@@ -90,3 +90,26 @@ TEST(PddDecomposeGraded, BadOptionsAndFilesAreClearErrors) {
                 .code,
             1);
 }
+
+TEST(PddDecomposeGraded, WeightAndAreaGridsFromFiles) {
+  // weights 0 except the node (0,0) of a 3 x 3 grid over the square: the corner's subdomain
+  // is small; the stats report the weights
+  const std::string weights =
+      pdd::test::write_temp_file("graded_w3.grid", "3 3 0 0 0.5 0.5\n9 0 0\n0 0 0\n0 0 0\n");
+  const std::string stats = pdd::test::write_temp_file("graded_g.json", "");
+  auto r = decompose(weighted_square + " -n 12 -q --grid-weights " + weights + " --stats " + stats);
+  ASSERT_EQ(r.code, 0) << r.output;
+  auto j = read_json(stats);
+  EXPECT_EQ(j["graded"]["mode"], "grid_weights");
+  EXPECT_EQ(j["graded"]["weight_max"].get<double>(), 9.0);
+  EXPECT_EQ(j["graded"]["weight_min"].get<double>(), 0.0);
+  // required area 0.05 everywhere (a 2 x 2 area grid): every subdomain <= 0.05 * 1.5
+  const std::string areas =
+      pdd::test::write_temp_file("graded_a2.grid", "2 2 0 0 1 1\n0.05 0.05\n0.05 0.05\n");
+  r = decompose(weighted_square + " -q --area-grid " + areas + " --area-ratio 1.5 --stats " +
+                stats);
+  ASSERT_EQ(r.code, 0) << r.output;
+  j = read_json(stats);
+  EXPECT_LE(j["graded"]["area_ratio_max"].get<double>(), 1.5);
+  EXPECT_GE(j["subdomains"].get<int>(), 14); // 1 / (0.05 * 1.5) = 13.3
+}
