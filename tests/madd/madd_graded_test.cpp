@@ -185,7 +185,7 @@ TEST(MaddGradedDecompose, BackgroundNodesConcentrateTheSubdomains) {
 
 /// Required subdomain area 0.002 + 0.05 x on [0,1]^2 (a callable: bounded on a grid).
 auto ramp_area() {
-  return pdd::analytic_sizing([](point q) { return 0.002 + 0.05 * q.x; });
+  return pdd::analytic_sizing{[](point q) { return 0.002 + 0.05 * q.x; }};
 }
 
 TEST(MaddGradedDecompose, AreaRatioRuleHoldsOnEveryFinalSubdomain) {
