@@ -1,0 +1,158 @@
+/// \file insertion.hpp
+/// Vertex insertion into the native triangulation by Bowyer-Watson cavities (Bowyer 1981,
+/// Watson 1981), constrained: a cavity grows from seed triangles across unconstrained edges to
+/// every triangle whose circumcircle contains the new point strictly, and is then shrunk until
+/// it is star-shaped from the point (a triangle behind a segment, reached around the segment's
+/// end, is not visible from the point and stays: Chew's constrained Delaunay condition).
+#pragma once
+
+#include <pdd/kernels/native/detail/triangulation.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace pdd::detail::native_mesh {
+
+/// The scratch arrays of cavity construction (reused: no allocation per insertion once grown).
+class cavity {
+public:
+  /// Grows the cavity of p from `seeds` (triangles whose circumcircle contains p or that
+  /// contain p). `crossing` (or no_ref) is a constrained edge between two seeds that p splits.
+  void grow(triangulation& tr, const point& p, std::initializer_list<std::uint32_t> seeds,
+            ref_t crossing) {
+    clear(tr);
+    crossing_ = crossing;
+    for (const std::uint32_t s : seeds)
+      add(tr, s);
+    while (!stack_.empty()) {
+      const std::uint32_t t = stack_.back();
+      stack_.pop_back();
+      for (int i = 0; i < 3; ++i) {
+        const ref_t n = tr.adj[t][i];
+        if (n == no_ref || tr.constrained(t, i)) continue;
+        const std::uint32_t u = ref_tri(n);
+        if ((tr.flags[u] & in_cavity_bit) == 0 &&
+            in_circle(tr.at(u, 0), tr.at(u, 1), tr.at(u, 2), p))
+          add(tr, u);
+      }
+    }
+  }
+
+  /// The constrained edges on the cavity's boundary that p encroaches (lies in their closed
+  /// diametral disk or not strictly on the cavity's side), as edge references.
+  const std::vector<ref_t>& encroached_segments(const triangulation& tr, const point& p) {
+    encroached_.clear();
+    for (const std::uint32_t t : members_)
+      for (int i = 0; i < 3; ++i) {
+        if (!tr.constrained(t, i) || make_ref(t, i) == crossing_ || is_crossing_twin(tr, t, i))
+          continue;
+        const point& a = tr.at(t, next3(i));
+        const point& b = tr.at(t, prev3(i));
+        if (orient(a, b, p) <= 0 || in_diametral_disk(a, b, p))
+          encroached_.push_back(make_ref(t, i));
+      }
+    return encroached_;
+  }
+
+  /// Removes triangles until every boundary edge sees p strictly on the cavity's side.
+  /// \returns false when a seed would have to go (p is not visible from the seeds).
+  bool make_star_shaped(triangulation& tr, const point& p, std::size_t seeds) {
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t k = 0; k < members_.size() && !changed; ++k) {
+        const std::uint32_t t = members_[k];
+        for (int i = 0; i < 3 && !changed; ++i) {
+          if (!on_boundary(tr, t, i)) continue;
+          if (orient(tr.at(t, next3(i)), tr.at(t, prev3(i)), p) > 0) continue;
+          if (k < seeds) return false;
+          tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] & ~in_cavity_bit);
+          members_.erase(members_.begin() + static_cast<std::ptrdiff_t>(k));
+          changed = true;
+        }
+      }
+    }
+    return true;
+  }
+
+  /// Replaces the cavity by the fan of triangles from the new vertex v (in tr.pts) to its
+  /// boundary edges. Constrained boundary edges stay constrained; each new triangle inherits
+  /// the in-domain flag of the triangle whose boundary edge it takes. With a crossing edge
+  /// (a, b), the new edges (v, a) and (v, b) are constrained. `created()` lists the new
+  /// triangles. Complexity O(cavity size).
+  void commit(triangulation& tr, index_t v) {
+    if (tr.vertex_tri.size() < tr.pts.size()) tr.vertex_tri.resize(tr.pts.size());
+    if (fan_at_.size() < tr.pts.size()) fan_at_.resize(tr.pts.size() * 2);
+    collect_boundary(tr);
+    created_.clear();
+    for (std::size_t j = 0; j < fan_.size(); ++j)
+      created_.push_back(j < members_.size() ? members_[j] : tr.new_slot());
+    for (std::size_t j = 0; j < fan_.size(); ++j) {
+      const fan_edge& e = fan_[j];
+      tr.write(created_[j], {v, e.u, e.w}, {e.outside, no_ref, no_ref}, e.flags);
+      fan_at_[e.u] = static_cast<std::uint32_t>(j);
+    }
+    for (std::size_t j = 0; j < fan_.size(); ++j) {
+      const std::uint32_t t = created_[j], m = created_[fan_at_[fan_[j].w]];
+      tr.adj[t][1] = make_ref(m, 2);
+      tr.adj[m][2] = make_ref(t, 1);
+      if (crossing_ != no_ref && (fan_[j].w == split_a_ || fan_[j].w == split_b_)) {
+        tr.set_constrained(t, 1, true);
+        tr.set_constrained(m, 2, true);
+      }
+    }
+    members_.clear();
+  }
+
+  /// Before a split commit: the endpoints of the crossing edge.
+  void set_split_endpoints(index_t a, index_t b) noexcept { split_a_ = a, split_b_ = b; }
+  const std::vector<std::uint32_t>& created() const noexcept { return created_; }
+  const std::vector<std::uint32_t>& members() const noexcept { return members_; }
+
+  /// Forgets the cavity (clears the marks).
+  void clear(triangulation& tr) {
+    for (const std::uint32_t t : members_)
+      tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] & ~in_cavity_bit);
+    members_.clear();
+    stack_.clear();
+  }
+
+private:
+  struct fan_edge {
+    index_t u, w;
+    ref_t outside;
+    std::uint8_t flags;
+  };
+
+  void add(triangulation& tr, std::uint32_t t) {
+    tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] | in_cavity_bit);
+    members_.push_back(t);
+    stack_.push_back(t);
+  }
+  bool is_crossing_twin(const triangulation& tr, std::uint32_t t, int i) const {
+    return crossing_ != no_ref && tr.adj[t][i] == crossing_;
+  }
+  /// Edge i of cavity triangle t is on the boundary: no cavity triangle behind it, or a
+  /// constrained edge (other than the crossing one) with cavity on both sides.
+  bool on_boundary(const triangulation& tr, std::uint32_t t, int i) const {
+    const ref_t n = tr.adj[t][i];
+    if (n == no_ref || (tr.flags[ref_tri(n)] & in_cavity_bit) == 0) return true;
+    return tr.constrained(t, i) && make_ref(t, i) != crossing_ && !is_crossing_twin(tr, t, i);
+  }
+  void collect_boundary(const triangulation& tr) {
+    fan_.clear();
+    for (const std::uint32_t t : members_)
+      for (int i = 0; i < 3; ++i)
+        if (on_boundary(tr, t, i))
+          fan_.push_back({tr.corner[t][next3(i)], tr.corner[t][prev3(i)], tr.adj[t][i],
+                          static_cast<std::uint8_t>((tr.flags[t] & in_domain_bit) |
+                                                    (tr.constrained(t, i) ? 1 : 0))});
+  }
+
+  std::vector<std::uint32_t> members_, stack_, created_, fan_at_;
+  std::vector<fan_edge> fan_;
+  std::vector<ref_t> encroached_;
+  ref_t crossing_ = no_ref;
+  index_t split_a_ = no_index, split_b_ = no_index;
+};
+
+} // namespace pdd::detail::native_mesh

@@ -1,0 +1,249 @@
+/// \file refine.hpp
+/// Ruppert's Delaunay refinement (Ruppert 1995; Shewchuk 1997 ch. 3, 2002) on the native
+/// triangulation, restricted to the domain: encroached subsegments are split first (at the
+/// midpoint, or on a concentric shell next to an input vertex); then the worst bad triangle
+/// (over its area bound first, then the smallest angle first, from a bucketed queue) gets its
+/// circumcentre, unless the circumcentre encroaches a subsegment, which is split instead and
+/// the triangle reconsidered. A subsegment is encroached only by a vertex on a domain side of
+/// it (as in pdd::cgal::mesher).
+///
+/// Small input angles (Shewchuk 2002, sec. 3.7 / Shewchuk 1997 sec. 3.5): with concentric
+/// shells, the two segments of a small angle are split at equal distances from its apex; a
+/// triangle that is bad only in shape and whose shortest edge joins two such vertices on the
+/// same shell (two segments meeting at an input vertex at an angle below 60 deg) is left
+/// unrefined: its small angle is forced by the input angle, and refining it would cascade
+/// into ever smaller splits. Shielded domains (dissertation 8.1) have no such angle, so there
+/// every triangle meets the bound.
+#pragma once
+
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/triangle_measures.hpp>
+#include <pdd/kernels/native/detail/insertion.hpp>
+#include <pdd/kernels/native/detail/segments.hpp>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pdd::detail::native_mesh {
+
+/// The bad-triangle queue: 64 FIFO buckets, over-area triangles (by the binary logarithm of
+/// their excess, largest first) before skinny ones (by sin^2 of the smallest angle, smallest
+/// first). Entries carry the corners so that a rewritten slot is recognised as stale.
+class bad_queue {
+public:
+  struct entry {
+    std::uint32_t t;
+    std::array<index_t, 3> c;
+  };
+  static constexpr int buckets = 64;
+
+  void push(int bucket, const entry& e) {
+    q_[static_cast<std::size_t>(bucket)].push_back(e);
+    if (bucket < first_) first_ = bucket;
+  }
+  bool pop(entry& e) {
+    for (; first_ < buckets; ++first_) {
+      auto& b = q_[static_cast<std::size_t>(first_)];
+      auto& h = head_[static_cast<std::size_t>(first_)];
+      if (h < b.size()) {
+        e = b[h++];
+        if (h == b.size()) b.clear(), h = 0;
+        return true;
+      }
+    }
+    return false;
+  }
+
+private:
+  std::array<std::vector<entry>, buckets> q_;
+  std::array<std::size_t, buckets> head_{};
+  int first_ = buckets;
+};
+
+/// The refinement of one triangulation. \tparam S a SizingField.
+template <SizingField S>
+class refiner {
+public:
+  refiner(triangulation& tr, cavity& cav, segment_ids& ids, const pslg& d, const mesh_criteria& c,
+          const S& sizing)
+      : tr_(tr), cav_(cav), ids_(ids), d_(d), shape_bound_(c.shape_bound()), max_area_(c.max_area),
+        sizing_(sizing) {}
+
+  /// Refines until no subsegment is encroached and no triangle of the domain is bad (except
+  /// those left at small input angles, see the file comment).
+  void run() {
+    scan();
+    bad_queue::entry e{};
+    for (;;) {
+      split_encroached();
+      if (!bad_.pop(e)) break;
+      if (tr_.corner[e.t] != e.c || !tr_.in_domain(e.t)) continue;
+      const quality q = measure(e.t);
+      if (q.bucket < 0 || (!q.over_area && at_small_input_angle(e.t))) continue;
+      refine_triangle(e);
+    }
+  }
+
+private:
+  struct quality {
+    int bucket = -1; ///< queue bucket; -1: not bad
+    bool over_area = false;
+  };
+
+  quality measure(std::uint32_t t) const {
+    const point &a = tr_.at(t, 0), &b = tr_.at(t, 1), &c = tr_.at(t, 2);
+    const double bound =
+        std::min(max_area_, static_cast<double>(sizing_.area_at(triangle_centroid(a, b, c))));
+    const double size = std::isinf(bound) ? 0.0 : triangle_area(a, b, c) / bound;
+    if (size > 1.0) return {31 - static_cast<int>(std::min(31.0, std::log2(size))), true};
+    const double sine = squared_sine_min_angle(a, b, c);
+    if (sine < shape_bound_)
+      return {32 + static_cast<int>(std::min(31.0, 32.0 * sine / shape_bound_)), false};
+    return {};
+  }
+
+  void push_if_bad(std::uint32_t t) {
+    const quality q = measure(t);
+    if (q.bucket >= 0) bad_.push(q.bucket, {t, tr_.corner[t]});
+  }
+
+  /// A vertex on a domain side of constrained edge i of t lies in its diametral disk.
+  bool encroached(std::uint32_t t, int i) const {
+    const point &a = tr_.at(t, next3(i)), &b = tr_.at(t, prev3(i));
+    if (tr_.in_domain(t) && in_diametral_disk(a, b, tr_.at(t, i))) return true;
+    const ref_t n = tr_.adj[t][i];
+    return n != no_ref && tr_.in_domain(ref_tri(n)) &&
+           in_diametral_disk(a, b, tr_.at(ref_tri(n), ref_edge(n)));
+  }
+
+  void queue_if_encroached(std::uint32_t t, int i) {
+    if (tr_.constrained(t, i) && encroached(t, i))
+      segments_.emplace_back(tr_.corner[t][next3(i)], tr_.corner[t][prev3(i)]);
+  }
+
+  void scan() {
+    for (std::uint32_t t = 0; t < tr_.size(); ++t) {
+      if (tr_.in_domain(t)) push_if_bad(t);
+      for (int i = 0; i < 3; ++i)
+        if (tr_.adj[t][i] != no_ref && ref_tri(tr_.adj[t][i]) > t) queue_if_encroached(t, i);
+    }
+  }
+
+  /// New triangles: queue the bad ones and the encroached subsegments on their edges.
+  void after_insertion() {
+    for (const std::uint32_t t : cav_.created()) {
+      if (tr_.in_domain(t)) push_if_bad(t);
+      for (int i = 0; i < 3; ++i)
+        queue_if_encroached(t, i);
+    }
+  }
+
+  void split_encroached() {
+    for (std::size_t k = 0; k < segments_.size(); ++k) {
+      const ref_t r = tr_.find_edge(segments_[k].first, segments_[k].second);
+      if (r != no_ref && tr_.constrained(ref_tri(r), ref_edge(r)) &&
+          encroached(ref_tri(r), ref_edge(r)))
+        split_segment(r);
+    }
+    segments_.clear();
+  }
+
+  /// Splits the subsegment of edge reference r (Ruppert's concentric shells, segments.hpp).
+  void split_segment(ref_t r) {
+    const std::uint32_t t = ref_tri(r);
+    const int i = ref_edge(r);
+    const index_t a = tr_.corner[t][next3(i)], b = tr_.corner[t][prev3(i)];
+    const point m = split_point(tr_.pts[a], ids_.is_input(a), tr_.pts[b], ids_.is_input(b));
+    const index_t seg = ids_.of_edge(a, b);
+    if ((m.x == tr_.pts[a].x && m.y == tr_.pts[a].y) ||
+        (m.x == tr_.pts[b].x && m.y == tr_.pts[b].y))
+      throw meshing_error(-1, "segment " + std::to_string(seg) +
+                                  " would be split into pieces below the floating-point "
+                                  "resolution (the bounds ask for too fine a mesh)");
+    cav_.grow(tr_, m, {t, ref_tri(tr_.adj[t][i])}, r);
+    if (!cav_.make_star_shaped(tr_, m, 2))
+      throw meshing_error(-1, "internal error: split point of segment " + std::to_string(seg) +
+                                  " is not visible from its segment");
+    const auto v = static_cast<index_t>(tr_.pts.size());
+    tr_.pts.push_back(m);
+    ids_.of_vertex.push_back(seg);
+    cav_.set_split_endpoints(a, b);
+    cav_.commit(tr_, v);
+    after_insertion();
+  }
+
+  /// Inserts the circumcentre of a bad triangle, or queues the subsegments it encroaches and
+  /// the triangle again.
+  void refine_triangle(const bad_queue::entry& e) {
+    const point &a = tr_.at(e.t, 0), &b = tr_.at(e.t, 1), &c = tr_.at(e.t, 2);
+    const auto cc = CGAL::circumcenter(cp(a), cp(b), cp(c));
+    const point p{cc.x(), cc.y()};
+    cav_.grow(tr_, p, {e.t}, no_ref);
+    const std::vector<ref_t>& enc = cav_.encroached_segments(tr_, p);
+    if (!enc.empty()) {
+      forced_.clear();
+      for (const ref_t r : enc)
+        forced_.emplace_back(tr_.corner[ref_tri(r)][next3(ref_edge(r))],
+                             tr_.corner[ref_tri(r)][prev3(ref_edge(r))]);
+      cav_.clear(tr_);
+      for (const auto& s : forced_)
+        force_split(s);
+      if (tr_.in_domain(e.t)) push_if_bad(e.t);
+      return;
+    }
+    if (!cav_.make_star_shaped(tr_, p, 1))
+      throw meshing_error(-1, "internal error: a circumcentre is not visible from its triangle");
+    const auto v = static_cast<index_t>(tr_.pts.size());
+    tr_.pts.push_back(p);
+    ids_.of_vertex.push_back(no_index);
+    cav_.commit(tr_, v);
+    after_insertion();
+  }
+
+  /// Splits a subsegment that a circumcentre encroaches, if it is still an edge.
+  void force_split(std::pair<index_t, index_t> s) {
+    const ref_t r = tr_.find_edge(s.first, s.second);
+    if (r != no_ref && tr_.constrained(ref_tri(r), ref_edge(r))) split_segment(r);
+  }
+
+  /// Shewchuk's rule for small input angles (file comment): the shortest edge of t joins
+  /// Steiner vertices on two segments that meet at an input vertex at less than 60 deg, at
+  /// the same distance from it (within 1%: both on one concentric shell).
+  bool at_small_input_angle(std::uint32_t t) const {
+    int k = 0;
+    double shortest = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < 3; ++i) {
+      const double l = squared_distance(tr_.at(t, next3(i)), tr_.at(t, prev3(i)));
+      if (l < shortest) shortest = l, k = i;
+    }
+    const index_t p = tr_.corner[t][next3(k)], q = tr_.corner[t][prev3(k)];
+    const index_t sp = ids_.of_vertex[p], sq = ids_.of_vertex[q];
+    if (sp == no_index || sq == no_index || sp == sq) return false;
+    const segment &x = d_.segments[sp], &y = d_.segments[sq];
+    const index_t apex = x.a == y.a || x.a == y.b ? x.a : x.b == y.a || x.b == y.b ? x.b : no_index;
+    if (apex == no_index) return false;
+    const point& w = tr_.pts[apex];
+    const point& u = tr_.pts[x.a == apex ? x.b : x.a];
+    const point& v = tr_.pts[y.a == apex ? y.b : y.a];
+    const double dot = (u.x - w.x) * (v.x - w.x) + (u.y - w.y) * (v.y - w.y);
+    if (!(dot > 0.5 * std::sqrt(squared_distance(u, w) * squared_distance(v, w)))) return false;
+    const double ratio = squared_distance(w, tr_.pts[p]) / squared_distance(w, tr_.pts[q]);
+    return ratio > 0.98 && ratio < 1.02;
+  }
+
+  triangulation& tr_;
+  cavity& cav_;
+  segment_ids& ids_;
+  const pslg& d_;
+  double shape_bound_, max_area_;
+  const S& sizing_;
+  bad_queue bad_;
+  std::vector<std::pair<index_t, index_t>> segments_, forced_;
+};
+
+} // namespace pdd::detail::native_mesh

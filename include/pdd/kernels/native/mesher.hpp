@@ -1,0 +1,84 @@
+/// \file mesher.hpp
+/// pdd::native::mesher: a DelaunayMesher written for pdd (no CGAL triangulation): a
+/// triangle-array constrained Delaunay triangulation with Ruppert's refinement.
+#pragma once
+
+#include <pdd/concepts/delaunay_mesher.hpp>
+#include <pdd/concepts/sizing_field.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/kernels/native/detail/build.hpp>
+#include <pdd/kernels/native/detail/extract.hpp>
+#include <pdd/kernels/native/detail/refine.hpp>
+
+#include <exception>
+#include <string>
+
+namespace pdd::native {
+
+/// Meshes one planar straight-line domain by Delaunay refinement on flat arrays (Ruppert 1995,
+/// Shewchuk 1997/2002) — dissertation ch. 1.1 and 6.1, the sequential mesher every subdomain
+/// is handed to. Models pdd::DelaunayMesher with the semantics of pdd::cgal::mesher.
+///
+/// Algorithm: the input vertices are inserted in Hilbert order (CGAL's spatial_sort) into a
+/// bounding triangle by Bowyer-Watson cavities located by a visibility walk from the last
+/// insertion; segments are recovered by flips and the constrained Delaunay property restored
+/// by Lawson's flips; the domain is marked by flood fill (odd nesting of segment loops, less
+/// hole regions); then refinement (detail/refine.hpp): encroached subsegments are split at
+/// their midpoints (on concentric shells next to an input vertex), bad triangles get their
+/// circumcentres from a bucketed queue, and a circumcentre that encroaches a subsegment is not
+/// inserted: the subsegment is split instead. A subsegment is encroached only by vertices on a
+/// domain side of it. Every geometric decision uses Epick's exact predicates (orientation,
+/// in-circle, angle); no epsilon decides topology.
+///
+/// Small input angles: Ruppert's concentric shells and Shewchuk's rule (a triangle that is bad
+/// only in shape and whose shortest edge joins the two segments of an input angle below 60 deg
+/// on one shell is left). Shielded domains (pdd::shield) have none, and every triangle meets
+/// the bound there; with unshielded small angles a few triangles at them may not.
+///
+/// Output: as pdd::cgal::mesher (input vertices first, bit for bit, with their markers; then
+/// Steiner vertices in insertion order; in-domain triangles counter-clockwise, marker 0;
+/// `segments` the mesh edges on input segments with their markers). Deterministic: the same
+/// input gives bitwise the same result on every run and thread.
+///
+/// Memory: 25 bytes per triangle slot (corners, packed neighbours, flag bits) and 24 per
+/// vertex (coordinates, a triangle reference, the segment of a Steiner vertex), plus the
+/// bad-triangle queue.
+///
+/// Thread-safety: the object is stateless; any number of `mesh` calls may run concurrently.
+struct mesher {
+  /// Meshes the domain of d. Complexity: O(n log n) expected in the output size n.
+  /// \tparam S a SizingField (area bound at a point, sampled at triangle centroids).
+  /// \pre criteria.min_angle_deg in [0, 60) (refinement is guaranteed to terminate for
+  ///   <= 20.7 deg with input angles >= 60 deg); criteria.max_area > 0; sizing.area_at > 0.
+  /// \throws meshing_error (subdomain -1) for unusable input (non-finite or coinciding
+  ///   vertices, bad or crossing segments, a vertex inside a segment, marker count mismatch,
+  ///   criteria out of range) or bounds finer than the floating-point resolution.
+  template <SizingField S>
+  mesher_result mesh(const pslg& d, const mesh_criteria& criteria, const S& sizing) const {
+    check(d, criteria);
+    namespace nm = detail::native_mesh;
+    nm::triangulation tr;
+    nm::cavity cav;
+    nm::build(tr, cav, d);
+    nm::segment_ids ids(d, tr.pts.size());
+    nm::refiner<S>(tr, cav, ids, d, criteria, sizing).run();
+    return nm::extract(tr, ids, d);
+  }
+
+private:
+  static void check(const pslg& d, const mesh_criteria& c) {
+    if (!d.vertex_markers.empty() && d.vertex_markers.size() != d.vertices.size())
+      throw meshing_error(-1, "vertex_markers has " + std::to_string(d.vertex_markers.size()) +
+                                  " entries for " + std::to_string(d.vertices.size()) +
+                                  " vertices");
+    if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
+      throw meshing_error(-1, "min_angle_deg must lie in [0, 60), got " +
+                                  std::to_string(c.min_angle_deg));
+    if (!(c.max_area > 0.0))
+      throw meshing_error(-1, "max_area must be > 0, got " + std::to_string(c.max_area));
+  }
+};
+
+} // namespace pdd::native
+
+static_assert(pdd::DelaunayMesher<pdd::native::mesher>);
