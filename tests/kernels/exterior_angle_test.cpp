@@ -6,8 +6,8 @@
 // must meet the bound.
 #include "test_support.hpp"
 
+#include "kernel_types.hpp"
 #include <pdd/geometry/properties.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 
@@ -53,11 +53,12 @@ double min_angle(const pdd::triangle_mesh& m) {
   return least;
 }
 
-/// Meshes d with the CGAL kernel (20.7 deg, max_area) and returns the smallest angle; with
+/// Meshes d with kernel M (20.7 deg, max_area) and returns the smallest angle; with
 /// `verify`, also checks exact Delaunay, conformity, area and the area bound.
+template <class M>
 double mesh_min_angle(const pdd::pslg& d, double max_area, bool verify, const std::string& at) {
   const pdd::mesh_criteria c{.min_angle_deg = 20.7, .max_area = max_area};
-  const pdd::mesher_result r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+  const pdd::mesher_result r = M{}.mesh(d, c, pdd::uniform_sizing{});
   if (verify) {
     const pdd::verification_report rep = pdd::verify(r.mesh, d, {.criteria = c});
     EXPECT_TRUE(rep.ok()) << at << ": " << (rep.messages.empty() ? "" : rep.messages.front());
@@ -65,23 +66,27 @@ double mesh_min_angle(const pdd::pslg& d, double max_area, bool verify, const st
   return min_angle(r.mesh);
 }
 
+template <class M>
+class MesherExteriorAngles : public ::testing::Test {};
+TYPED_TEST_SUITE(MesherExteriorAngles, pdd::test::kernel_types, pdd::test::kernel_names);
+
 } // namespace
 
-TEST(CgalMesherExteriorAngles, SharpHoleCornerNearTheBoundary) {
+TYPED_TEST(MesherExteriorAngles, SharpHoleCornerNearTheBoundary) {
   // Before the fix: one face of 12.38 deg next to the hole's 20 deg corner.
   const pdd::pslg d = square_with_sharp_hole(20.0, {0.37, 0.02}, 0.5);
   ASSERT_GE(pdd::min_domain_angle_deg(d), 60.0); // nothing to shield
-  EXPECT_GE(mesh_min_angle(d, 0.03, true, "hole"), 20.7 - 1e-9);
+  EXPECT_GE(mesh_min_angle<TypeParam>(d, 0.03, true, "hole"), 20.7 - 1e-9);
 }
 
-TEST(CgalMesherExteriorAngles, SharpNotchNearTheBoundary) {
+TYPED_TEST(MesherExteriorAngles, SharpNotchNearTheBoundary) {
   // Before the fix: 12.38 deg next to the notch's 10 deg tip.
   const pdd::pslg d = square_with_sharp_notch(10.0, {0.37, 0.02});
   ASSERT_GE(pdd::min_domain_angle_deg(d), 60.0);
-  EXPECT_GE(mesh_min_angle(d, 0.03, true, "notch"), 20.7 - 1e-9);
+  EXPECT_GE(mesh_min_angle<TypeParam>(d, 0.03, true, "notch"), 20.7 - 1e-9);
 }
 
-TEST(CgalMesherExteriorAngles, RandomisedSharpCornersAcrossAThinPart) {
+TYPED_TEST(MesherExteriorAngles, RandomisedSharpCornersAcrossAThinPart) {
   // Holes and notches with exterior angles of 5-59 deg whose tip is 0.003-0.15 from the bottom
   // side, area bounds 1e-3 to 1e-1 (before the fix about 5% of these had faces of 9-19 deg).
   std::mt19937_64 rng(20261123);
@@ -104,7 +109,7 @@ TEST(CgalMesherExteriorAngles, RandomisedSharpCornersAcrossAThinPart) {
                            std::to_string(alpha) + " tip (" + std::to_string(tip.x) + ", " +
                            std::to_string(tip.y) + ") length " + std::to_string(length) + " area " +
                            std::to_string(area);
-    const double least = mesh_min_angle(d, area, (holes + notches) % 10 == 0, at);
+    const double least = mesh_min_angle<TypeParam>(d, area, (holes + notches) % 10 == 0, at);
     EXPECT_GE(least, 20.7 - 1e-9) << at;
     bad += least < 20.7 - 1e-9;
   }

@@ -1,10 +1,11 @@
-// Tests of pdd::cgal::mesher, the default DelaunayMesher.
+// Tests of the DelaunayMesher models (pdd::cgal::mesher, pdd::native::mesher): every test runs
+// on every kernel (kernel_types.hpp).
 #include "test_domains.hpp"
 #include "test_support.hpp"
 
+#include "kernel_types.hpp"
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/io/poly.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/sizing/analytic.hpp>
@@ -109,13 +110,17 @@ pdd::mesh_criteria criteria_with_area(double a) {
   return c;
 }
 
+template <class M>
+class Mesher : public ::testing::Test {};
+TYPED_TEST_SUITE(Mesher, pdd::test::kernel_types, pdd::test::kernel_names);
+
 } // namespace
 
-TEST(CgalMesher, ModelsTheConcept) {
-  static_assert(pdd::DelaunayMesher<pdd::cgal::mesher>);
+TYPED_TEST(Mesher, ModelsTheConcept) {
+  static_assert(pdd::DelaunayMesher<TypeParam>);
 }
 
-TEST(CgalMesher, HandMadeDomains) {
+TYPED_TEST(Mesher, HandMadeDomains) {
   const std::vector<std::pair<std::string, pdd::pslg>> domains{
       {"square", pdd::test::unit_square()},
       {"square with hole", pdd::test::square_with_hole()},
@@ -127,24 +132,24 @@ TEST(CgalMesher, HandMadeDomains) {
   for (const auto& [name, d] : domains) {
     for (const double a : {std::numeric_limits<double>::infinity(), 0.01, 0.002}) {
       const auto c = criteria_with_area(a);
-      const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+      const auto r = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
       expect_good_mesh(d, c, pdd::uniform_sizing{}, r, name + " A=" + std::to_string(a));
     }
   }
 }
 
-TEST(CgalMesher, SquareWithoutBoundIsTwoTriangles) {
+TYPED_TEST(Mesher, SquareWithoutBoundIsTwoTriangles) {
   const auto d = pdd::test::unit_square();
-  const auto r = pdd::cgal::mesher{}.mesh(d, {}, pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, {}, pdd::uniform_sizing{});
   EXPECT_EQ(r.mesh.triangles.size(), 2u);
   EXPECT_EQ(r.mesh.vertices.size(), 4u);
   EXPECT_TRUE(r.split_segments.empty());
   EXPECT_EQ(r.mesh.segments.size(), 4u);
 }
 
-TEST(CgalMesher, HoleRegionsAreEmpty) {
+TYPED_TEST(Mesher, HoleRegionsAreEmpty) {
   const auto d = pdd::test::square_with_hole();
-  const auto r = pdd::cgal::mesher{}.mesh(d, criteria_with_area(0.01), pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, criteria_with_area(0.01), pdd::uniform_sizing{});
   for (const auto& t : r.mesh.triangles) {
     const auto& v = r.mesh.vertices;
     const point c{(v[t[0]].x + v[t[1]].x + v[t[2]].x) / 3, (v[t[0]].y + v[t[1]].y + v[t[2]].y) / 3};
@@ -153,13 +158,13 @@ TEST(CgalMesher, HoleRegionsAreEmpty) {
   // The same hole given by nesting alone (no hole point) is also left out.
   auto nested = d;
   nested.holes.clear();
-  const auto r2 = pdd::cgal::mesher{}.mesh(nested, criteria_with_area(0.01), pdd::uniform_sizing{});
+  const auto r2 = TypeParam{}.mesh(nested, criteria_with_area(0.01), pdd::uniform_sizing{});
   EXPECT_TRUE(bitwise_equal(r, r2));
 }
 
-TEST(CgalMesher, SteinerMarkersFollowSegments) {
+TYPED_TEST(Mesher, SteinerMarkersFollowSegments) {
   const auto d = pdd::test::marker_polygon();
-  const auto r = pdd::cgal::mesher{}.mesh(d, criteria_with_area(0.005), pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, criteria_with_area(0.005), pdd::uniform_sizing{});
   const auto& m = r.mesh;
   ASSERT_FALSE(r.split_segments.empty());
   std::size_t on_segment = 0;
@@ -185,49 +190,48 @@ TEST(CgalMesher, SteinerMarkersFollowSegments) {
   }
 }
 
-TEST(CgalMesher, RandomDomainsWithLargeAngles) {
+TYPED_TEST(Mesher, RandomDomainsWithLargeAngles) {
   for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     const auto d = pdd::test::random_domain_60(seed);
     const double a = seed % 3 == 0 ? 0.02 : 0.002;
     const auto c = criteria_with_area(a);
-    const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+    const auto r = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
     expect_good_mesh(d, c, pdd::uniform_sizing{}, r, "seed " + std::to_string(seed));
   }
 }
 
-TEST(CgalMesher, GradedSizingField) {
+TYPED_TEST(Mesher, GradedSizingField) {
   const pdd::analytic_sizing s{[](point p) { return 1e-4 + 0.02 * (p.x * p.x + p.y * p.y); }};
   for (std::uint64_t seed = 100; seed < 104; ++seed) {
     const auto d = pdd::test::random_domain_60(seed);
     pdd::mesh_criteria c;
     c.min_angle_deg = 25;
-    const auto r = pdd::cgal::mesher{}.mesh(d, c, s);
+    const auto r = TypeParam{}.mesh(d, c, s);
     expect_good_mesh(d, c, s, r, "graded seed " + std::to_string(seed));
   }
 }
 
-TEST(CgalMesher, Deterministic) {
+TYPED_TEST(Mesher, Deterministic) {
   const auto d = pdd::pipe_domain(192, 24);
   const auto c = criteria_with_area(2e-4);
-  const auto r1 = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
-  const auto r2 = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+  const auto r1 = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
+  const auto r2 = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
   EXPECT_GT(r1.mesh.triangles.size(), 10000u);
   EXPECT_TRUE(bitwise_equal(r1, r2));
 }
 
-TEST(CgalMesher, ConcurrentInstancesMatchSequential) {
+TYPED_TEST(Mesher, ConcurrentInstancesMatchSequential) {
   std::vector<pdd::pslg> inputs{pdd::pipe_domain(96, 12), pdd::key_domain(),
                                 pdd::test::random_domain_60(7), pdd::test::two_holes()};
   const auto c = criteria_with_area(1e-3);
   std::vector<pdd::mesher_result> sequential, concurrent(inputs.size());
   for (const auto& d : inputs)
-    sequential.push_back(pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{}));
+    sequential.push_back(TypeParam{}.mesh(d, c, pdd::uniform_sizing{}));
   for (int round = 0; round < 3; ++round) {
     std::vector<std::thread> threads;
     for (std::size_t i = 0; i < inputs.size(); ++i)
-      threads.emplace_back([&, i] {
-        concurrent[i] = pdd::cgal::mesher{}.mesh(inputs[i], c, pdd::uniform_sizing{});
-      });
+      threads.emplace_back(
+          [&, i] { concurrent[i] = TypeParam{}.mesh(inputs[i], c, pdd::uniform_sizing{}); });
     for (auto& t : threads)
       t.join();
     for (std::size_t i = 0; i < inputs.size(); ++i)
@@ -235,21 +239,21 @@ TEST(CgalMesher, ConcurrentInstancesMatchSequential) {
   }
 }
 
-TEST(CgalMesher, ReportsASegmentThatMustBeSplit) {
+TYPED_TEST(Mesher, ReportsASegmentThatMustBeSplit) {
   // A long bottom segment with an input vertex just above its middle: the vertex lies in the
   // segment's diametral circle, so Delaunay refinement must split it.
   pdd::pslg d;
   d.add_loop(std::vector<point>{{0, 0}, {10, 0}, {10, 6}, {0, 6}}, 1);
   const pdd::pslg domain = d; // the same domain without the free vertex
   d.add_vertex({5, 0.01}, 7);
-  const auto r = pdd::cgal::mesher{}.mesh(d, {}, pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, {}, pdd::uniform_sizing{});
   ASSERT_FALSE(r.split_segments.empty());
   EXPECT_EQ(r.split_segments[0], 0u);
   expect_good_mesh(domain, {}, pdd::uniform_sizing{}, pdd::mesher_result{r.mesh, r.split_segments},
                    "split bottom");
 }
 
-TEST(CgalMesher, PreSplitChainIsNotSplit) {
+TYPED_TEST(Mesher, PreSplitChainIsNotSplit) {
   // A 4 x 1 rectangle whose sides are pre-split into pieces of length 0.1, as the decoupling
   // method splits interfaces: under an area bound whose triangles are larger than the pieces
   // need, no piece is encroached and none is split.
@@ -265,13 +269,13 @@ TEST(CgalMesher, PreSplitChainIsNotSplit) {
   pdd::pslg d;
   d.add_loop(pts, 3);
   const auto c = criteria_with_area(0.02);
-  const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
   EXPECT_TRUE(r.split_segments.empty());
   EXPECT_EQ(r.mesh.segments.size(), d.segments.size());
   expect_good_mesh(d, c, pdd::uniform_sizing{}, r, "pre-split chain");
 }
 
-TEST(CgalMesher, EncroachmentFromOutsideTheDomainIsIgnored) {
+TYPED_TEST(Mesher, EncroachmentFromOutsideTheDomainIsIgnored) {
   // A U whose notch (outside the domain) is 0.2 wide: the vertex (1.2, 1.25) on the right
   // wall lies in the diametral circle of the left wall's segment (1, 0.5)-(1, 2), but on the
   // far side of the notch. CGAL's two-sided test would split that segment; ours must not.
@@ -280,14 +284,14 @@ TEST(CgalMesher, EncroachmentFromOutsideTheDomainIsIgnored) {
       std::vector<point>{
           {0, 0}, {2.2, 0}, {2.2, 2}, {1.2, 2}, {1.2, 1.25}, {1.2, 0.5}, {1, 0.5}, {1, 2}, {0, 2}},
       1);
-  const auto r = pdd::cgal::mesher{}.mesh(d, {}, pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, {}, pdd::uniform_sizing{});
   EXPECT_TRUE(std::find(r.split_segments.begin(), r.split_segments.end(), 6u) ==
               r.split_segments.end());
   expect_good_mesh(d, {}, pdd::uniform_sizing{}, r, "U");
 }
 
-TEST(CgalMesher, RejectsUnusableInput) {
-  const pdd::cgal::mesher m;
+TYPED_TEST(Mesher, RejectsUnusableInput) {
+  const TypeParam m;
   const pdd::uniform_sizing s;
   auto dup = pdd::test::unit_square();
   dup.add_vertex({1, 1});
@@ -320,12 +324,12 @@ TEST(CgalMesher, RejectsUnusableInput) {
   }
 }
 
-TEST(CgalMesher, DegenerateInputGivesNoTriangles) {
+TYPED_TEST(Mesher, DegenerateInputGivesNoTriangles) {
   pdd::pslg d;
   d.add_vertex({0, 0});
   d.add_vertex({1, 1});
   d.add_segment(0, 1);
-  const auto r = pdd::cgal::mesher{}.mesh(d, {}, pdd::uniform_sizing{});
+  const auto r = TypeParam{}.mesh(d, {}, pdd::uniform_sizing{});
   EXPECT_TRUE(r.mesh.triangles.empty());
   EXPECT_EQ(r.mesh.vertices.size(), 2u);
 }
@@ -347,26 +351,30 @@ double bbox_area(const pdd::pslg& d) {
   return (x1 - x0) * (y1 - y0);
 }
 
+template <class M>
+class MesherSharedData : public ::testing::Test {};
+TYPED_TEST_SUITE(MesherSharedData, pdd::test::kernel_types, pdd::test::kernel_names);
+
 } // namespace
 
-TEST(CgalMesherSharedData, AirfoilMeetsEveryBound) {
+TYPED_TEST(MesherSharedData, AirfoilMeetsEveryBound) {
   // The only shared geometry whose smallest angle on the meshed side (113.6 deg) is >= 60.
   if (pdd::test::shared_data_dir().empty()) GTEST_SKIP() << "../shared/data absent";
   const auto d = read_shared("mesh2d_airfoil_3element.poly");
   for (const double a : {std::numeric_limits<double>::infinity(), 1e-3, 1e-4}) {
     const auto c = criteria_with_area(a);
-    const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+    const auto r = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
     expect_good_mesh(d, c, pdd::uniform_sizing{}, r, "airfoil A=" + std::to_string(a));
   }
   const pdd::analytic_sizing graded{[](point p) {
     return 2e-6 + 1e-3 * ((p.x - 0.5) * (p.x - 0.5) + (p.y - 0.5) * (p.y - 0.5));
   }};
-  const auto r = pdd::cgal::mesher{}.mesh(d, {}, graded);
+  const auto r = TypeParam{}.mesh(d, {}, graded);
   expect_good_mesh(d, {}, graded, r, "airfoil graded");
-  EXPECT_TRUE(bitwise_equal(r, pdd::cgal::mesher{}.mesh(d, {}, graded)));
+  EXPECT_TRUE(bitwise_equal(r, TypeParam{}.mesh(d, {}, graded)));
 }
 
-TEST(CgalMesherSharedData, SmallInputAnglesStillGiveValidMeshes) {
+TYPED_TEST(MesherSharedData, SmallInputAnglesStillGiveValidMeshes) {
   // Input angles below 60 deg: no quality guarantee near them, but the mesh must still be a
   // conforming constrained Delaunay mesh of exactly the domain within the area bound.
   if (pdd::test::shared_data_dir().empty()) GTEST_SKIP() << "../shared/data absent";
@@ -374,7 +382,7 @@ TEST(CgalMesherSharedData, SmallInputAnglesStillGiveValidMeshes) {
                            "texas.poly", "guitar.poly"}) {
     const auto d = read_shared(name);
     const auto c = criteria_with_area(bbox_area(d) / 2000);
-    const auto r = pdd::cgal::mesher{}.mesh(d, c, pdd::uniform_sizing{});
+    const auto r = TypeParam{}.mesh(d, c, pdd::uniform_sizing{});
     const auto rep = pdd::verify(r.mesh, d, {.criteria = c});
     SCOPED_TRACE(name);
     EXPECT_EQ(rep.delaunay_violations, 0u);
@@ -391,7 +399,7 @@ TEST(CgalMesherSharedData, SmallInputAnglesStillGiveValidMeshes) {
   }
 }
 
-TEST(CgalMesherSharedData, DanglingSegmentsAndFreeVerticesAreMeshed) {
+TYPED_TEST(MesherSharedData, DanglingSegmentsAndFreeVerticesAreMeshed) {
   // face.poly has dangling segments and isolated vertices, clusters.poly a star of dangling
   // segments: they are constraints inside the domain (both sides meshed).
   if (pdd::test::shared_data_dir().empty()) GTEST_SKIP() << "../shared/data absent";
@@ -399,7 +407,7 @@ TEST(CgalMesherSharedData, DanglingSegmentsAndFreeVerticesAreMeshed) {
     SCOPED_TRACE(name);
     const auto d = read_shared(name);
     const auto r =
-        pdd::cgal::mesher{}.mesh(d, criteria_with_area(bbox_area(d) / 1000), pdd::uniform_sizing{});
+        TypeParam{}.mesh(d, criteria_with_area(bbox_area(d) / 1000), pdd::uniform_sizing{});
     const auto edges = mesh_edges(r.mesh);
     std::vector<index_t> split;
     for (index_t s = 0; s < d.segments.size(); ++s)
