@@ -21,6 +21,7 @@
 #include <pdd/io/poly.hpp>
 #include <pdd/io/svg.hpp>
 #include <pdd/io/write_mesh.hpp>
+#include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
@@ -56,6 +57,7 @@ struct cli_options : pdd::drivers::mesh_options {
   std::string output, svg, svg_histogram;
   std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
   bool verify = false, compare_monolithic = false;
+  std::string kernel = "cgal"; ///< --kernel: cgal (pdd::cgal::mesher) or native
 };
 
 /// Stage lines and the progress bar on stderr, drawn only when stderr is a terminal.
@@ -159,8 +161,10 @@ void read_input(const cli_options& o, mesh_run& r) {
 }
 
 /// Meshes into a merged mesh, or with --output-per-subdomain into files, measuring each
-/// subdomain mesh on its way (nothing is kept).
+/// subdomain mesh on its way (nothing is kept). \tparam M the kernel (--kernel).
+template <pdd::DelaunayMesher M>
 void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
+  const M mesher;
   if (!o.per_subdomain_dir.empty()) {
     pdd::vtu_directory_sink files(o.per_subdomain_dir);
     // each subdomain mesh is checked before its file is written (the .pvtu index comes last)
@@ -168,7 +172,7 @@ void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
     pdd::statistics_sink measured(checked, r.domain, r.sizing);
     progress_sink sink(measured, bar);
     try {
-      r.gs = pdd::generate(r.domain, r.options, sink);
+      r.gs = pdd::generate(r.domain, r.options, sink, mesher);
     } catch (const pdd::error&) {
       remove_pieces(files); // no index was written: leave no pieces of a failed run either
       throw;
@@ -176,13 +180,13 @@ void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
     r.st = measured.statistics();
     r.sst = measured.shielding();
   } else if (o.subdomains == 1) {
-    pdd::generate_result g = pdd::generate(r.domain, r.options);
+    pdd::generate_result g = pdd::generate(r.domain, r.options, mesher);
     r.gs = std::move(g.statistics);
     r.mesh = std::move(g.mesh);
   } else {
     pdd::merge_sink merged(o.threads);
     progress_sink sink(merged, bar);
-    r.gs = pdd::generate(r.domain, r.options, sink);
+    r.gs = pdd::generate(r.domain, r.options, sink, mesher);
     r.mesh = merged.take();
     r.gs.vertices = r.mesh->vertices.size();
   }
@@ -207,13 +211,14 @@ void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
 }
 
 /// --compare-monolithic: the kernel on the whole domain, counted only (not part of the total).
+template <pdd::DelaunayMesher M>
 void compare_monolithic(mesh_run& r, progress& bar) {
   bar.stage("monolithic run for comparison");
   const auto t0 = std::chrono::steady_clock::now();
   pdd::generate_options m = r.options;
   m.subdomains = 1;
   pdd::counting_sink counted;
-  pdd::generate(r.domain, m, counted);
+  pdd::generate(r.domain, m, counted, M{});
   r.monolithic_triangles = counted.triangles();
   r.t_monolithic = pdd::seconds_since(t0);
 }
@@ -226,6 +231,7 @@ void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) 
   j["vertices"] = r.mesh ? nlohmann::json(r.mesh->vertices.size()) : nullptr;
   j["subdomains"] = gs.subdomains;
   j["threads"] = gs.threads;
+  j["kernel"] = o.kernel;
   j["k"] = gs.k;
   j["split_points"] = gs.split_points;
   j["interface_splits"] = gs.interface_splits;
@@ -315,9 +321,18 @@ int run(const cli_options& o) {
   bar.stage("reading input");
   read_input(o, r);
   bar.stage("decomposing and meshing");
-  generate_mesh(o, r, bar);
+  const bool native = o.kernel == "native";
+  if (native)
+    generate_mesh<pdd::native::mesher>(o, r, bar);
+  else
+    generate_mesh<pdd::cgal::mesher>(o, r, bar);
   measure_and_verify(o, r, bar); // verification time is part of the total
-  if (o.compare_monolithic) compare_monolithic(r, bar);
+  if (o.compare_monolithic) {
+    if (native)
+      compare_monolithic<pdd::native::mesher>(r, bar);
+    else
+      compare_monolithic<pdd::cgal::mesher>(r, bar);
+  }
 
   bar.stage("writing");
   const auto t_write0 = std::chrono::steady_clock::now();
@@ -359,6 +374,10 @@ int main(int argc, char** argv) {
   CLI::App app{"pdd-mesh: guaranteed-quality 2D Delaunay meshing of a Triangle .poly domain"};
   auto* per = add_mesh_options(app, o, "threads (default: all cores)");
   app.add_option("-o,--output", o.output, "output mesh: .vtu, .node (+.ele/.poly), .msh, .svg");
+  app.add_option("--kernel", o.kernel,
+                 "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
+                 "(pdd's triangle-array mesher)")
+      ->check(CLI::IsMember({"cgal", "native"}));
   auto* ver =
       app.add_flag("--verify", o.verify, "verify Delaunay property, conformity, quality and area");
   app.add_flag("--compare-monolithic", o.compare_monolithic,
