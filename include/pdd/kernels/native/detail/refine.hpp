@@ -1,7 +1,7 @@
 /// \file refine.hpp
 /// Ruppert's Delaunay refinement (Ruppert 1995; Shewchuk 1997 ch. 3, 2002) on the native
 /// triangulation, restricted to the domain: encroached subsegments are split first (at the
-/// midpoint, or on a concentric shell next to an input vertex); then the worst bad triangle
+/// midpoint, or on a concentric shell next to an input vertex); then a worst bad triangle
 /// (over its area bound first, then the smallest angle first, from a bucketed queue) gets its
 /// circumcentre, unless the circumcentre encroaches a subsegment, which is split instead and
 /// the triangle reconsidered. A subsegment is encroached only by a vertex on a domain side of
@@ -31,9 +31,12 @@
 
 namespace pdd::detail::native_mesh {
 
-/// The bad-triangle queue: 64 FIFO buckets, over-area triangles (by the binary logarithm of
-/// their excess, largest first) before skinny ones (by sin^2 of the smallest angle, smallest
-/// first). Entries carry the corners so that a rewritten slot is recognised as stale.
+/// The bad-triangle queue: 64 buckets, over-area triangles (by the binary logarithm of their
+/// excess, largest first) before skinny ones (by sin^2 of the smallest angle, smallest first).
+/// Within a bucket the last triangle queued is refined first: the new triangles of an
+/// insertion are refined next, while their memory is in cache (at 1M triangles this took the
+/// kernel from 0.70 to 0.41 us per triangle against first-in first-out, for 1.5% more
+/// triangles). Entries carry the corners so that a rewritten slot is recognised as stale.
 class bad_queue {
 public:
   struct entry {
@@ -49,10 +52,9 @@ public:
   bool pop(entry& e) {
     for (; first_ < buckets; ++first_) {
       auto& b = q_[static_cast<std::size_t>(first_)];
-      auto& h = head_[static_cast<std::size_t>(first_)];
-      if (h < b.size()) {
-        e = b[h++];
-        if (h == b.size()) b.clear(), h = 0;
+      if (!b.empty()) {
+        e = b.back();
+        b.pop_back();
         return true;
       }
     }
@@ -61,7 +63,6 @@ public:
 
 private:
   std::array<std::vector<entry>, buckets> q_;
-  std::array<std::size_t, buckets> head_{};
   int first_ = buckets;
 };
 
@@ -82,7 +83,8 @@ public:
     for (;;) {
       split_encroached();
       if (!bad_.pop(e)) break;
-      if (tr_.corner[e.t] != e.c || !tr_.in_domain(e.t)) continue;
+      const auto& now = tr_.corner[e.t];
+      if (now[0] != e.c[0] || now[1] != e.c[1] || now[2] != e.c[2] || !tr_.in_domain(e.t)) continue;
       const quality q = measure(e.t);
       if (q.bucket < 0 || (!q.over_area && at_small_input_angle(e.t))) continue;
       refine_triangle(e);
