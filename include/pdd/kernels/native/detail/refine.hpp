@@ -102,7 +102,7 @@ private:
     const double bound =
         std::min(max_area_, static_cast<double>(sizing_.area_at(triangle_centroid(a, b, c))));
     const double size = std::isinf(bound) ? 0.0 : triangle_area(a, b, c) / bound;
-    if (size > 1.0) return {31 - static_cast<int>(std::min(31.0, std::log2(size))), true};
+    if (size > 1.0) return {31 - std::min(31, std::ilogb(size)), true}; // floor(log2(size))
     const double sine = squared_sine_min_angle(a, b, c);
     if (sine < shape_bound_)
       return {32 + static_cast<int>(std::min(31.0, 32.0 * sine / shape_bound_)), false};
