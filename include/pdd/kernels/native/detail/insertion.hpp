@@ -8,7 +8,9 @@
 
 #include <pdd/kernels/native/detail/triangulation.hpp>
 
+#include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 namespace pdd::detail::native_mesh {

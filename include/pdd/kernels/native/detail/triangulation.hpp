@@ -13,7 +13,9 @@
 #include <pdd/core/point.hpp>
 #include <pdd/errors.hpp>
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
