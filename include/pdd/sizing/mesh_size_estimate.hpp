@@ -89,8 +89,8 @@ mesh_size_estimate estimate_mesh_size(const pslg& g, double max_area, const S& s
     };
     for (std::size_t i = 0; i < n; ++i)
       for (std::size_t j = 0; i + j < n; ++j) {
-        sum += in.piece(t, at(i, j), at(i + 1, j), at(i, j + 1), 0);
-        if (i + j + 1 < n) sum += in.piece(t, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1), 0);
+        sum += in.top(t, at(i, j), at(i + 1, j), at(i, j + 1));
+        if (i + j + 1 < n) sum += in.top(t, at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
       }
   }
   // at least the input's own triangles (a domain that is one shielded corner is one triangle)

@@ -43,18 +43,30 @@ public:
         c_across_(across_area_factor), shield_area_(shield_area), lfs_min_(field.min_vertex_gap()) {
   }
 
+  /// A corner of a piece with its gap sample (shared by the pieces that meet there).
+  struct corner {
+    point p;
+    gap_sample gap;
+  };
+
+  /// Integrates over triangle t of the field (the top-level pieces of one n x n subdivision).
+  double top(std::size_t t, const point& a, const point& b, const point& c) {
+    return piece(t, {a, field_.at(a, t)}, {b, field_.at(b, t)}, {c, field_.at(c, t)}, 0);
+  }
+
   /// Integrates over piece (a, b, c) of triangle t; returns the integral of 1 / min(F, bound)
   /// and adds the integral of 1 / F (midpoint rule) to area_integral at depth 0. Splits the
   /// piece at the midpoint of its longest edge while the gap varies (slivers along a wedge
   /// are cut across, so the pieces follow the gap's change and not the mesh's scale).
-  double piece(std::size_t t, const point& a, const point& b, const point& c, int depth) {
+  double piece(std::size_t t, const corner& a, const corner& b, const corner& c, int depth) {
     ++pieces_;
-    const point x{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
-    const double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2.0;
+    const point x{(a.p.x + b.p.x + c.p.x) / 3.0, (a.p.y + b.p.y + c.p.y) / 3.0};
+    const double area =
+        std::abs((b.p.x - a.p.x) * (c.p.y - a.p.y) - (b.p.y - a.p.y) * (c.p.x - a.p.x)) / 2.0;
     const double f = std::min(max_area_, static_cast<double>(sizing_.area_at(x)));
     const double by_area = std::isfinite(f) ? area / f : 0.0;
     if (depth == 0) area_integral += by_area;
-    std::array<gap_sample, 4> s{field_.at(a, t), field_.at(b, t), field_.at(c, t), field_.at(x, t)};
+    std::array<gap_sample, 4> s{a.gap, b.gap, c.gap, field_.at(x, t)};
     const bool centre_shielded = in_shield(s[3]);
     double lo = std::numeric_limits<double>::infinity(), hi = 0.0;
     for (gap_sample& g : s) {
@@ -65,14 +77,21 @@ public:
     // no feature bound here; or the shielded corner of a small angle; or a piece too thin for
     // doubles (its midpoints would repeat its corners)
     if (!(lo < f) || centre_shielded || !(area > 0.0)) return by_area;
-    if (hi <= even_variation * even_variation * lo || depth >= max_depth || pieces_ >= piece_budget)
+    // splitting a piece that holds less than a quarter of a triangle gains nothing
+    if (area / lo < 0.25 || hi <= even_variation * even_variation * lo || depth >= max_depth ||
+        pieces_ >= piece_budget)
       return quadrature(s, x, area, f, by_area);
-    const double ab = squared(a, b), bc = squared(b, c), ca = squared(c, a);
-    if (ab >= bc && ab >= ca)
-      return piece(t, a, mid(a, b), c, depth + 1) + piece(t, mid(a, b), b, c, depth + 1);
-    if (bc >= ca)
-      return piece(t, a, b, mid(b, c), depth + 1) + piece(t, a, mid(b, c), c, depth + 1);
-    return piece(t, a, b, mid(c, a), depth + 1) + piece(t, mid(c, a), b, c, depth + 1);
+    const double ab = squared(a.p, b.p), bc = squared(b.p, c.p), ca = squared(c.p, a.p);
+    if (ab >= bc && ab >= ca) {
+      const corner m = middle(t, a, b);
+      return piece(t, a, m, c, depth + 1) + piece(t, m, b, c, depth + 1);
+    }
+    if (bc >= ca) {
+      const corner m = middle(t, b, c);
+      return piece(t, a, b, m, depth + 1) + piece(t, a, m, c, depth + 1);
+    }
+    const corner m = middle(t, c, a);
+    return piece(t, a, b, m, depth + 1) + piece(t, m, b, c, depth + 1);
   }
 
   /// The integral of 1 / F (midpoint rule on the top-level pieces).
@@ -93,7 +112,10 @@ private:
   static double squared(const point& p, const point& q) {
     return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
   }
-  static point mid(const point& p, const point& q) { return {(p.x + q.x) / 2, (p.y + q.y) / 2}; }
+  corner middle(std::size_t t, const corner& p, const corner& q) const {
+    const point m{(p.p.x + q.p.x) / 2, (p.p.y + q.p.y) / 2};
+    return {m, field_.at(m, t)};
+  }
 
   /// True when the point lies in the shielded corner of a small angle (Algorithm 8.2): its gap
   /// comes from the angle's two segments and is below the shield edge. A piece whose centroid
