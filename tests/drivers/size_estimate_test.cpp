@@ -20,6 +20,15 @@ nlohmann::json read_json(const std::filesystem::path& p) {
   return nlohmann::json::parse(in);
 }
 
+/// The pdd-mesh command line with these arguments.
+std::string pdd_mesh(const std::string& args) {
+  std::string c = "'";
+  c += PDD_MESH_EXE;
+  c += "' ";
+  c += args;
+  return c;
+}
+
 /// An isosceles triangle with base 1 and the given height.
 std::string spike_poly(const std::string& height) {
   return "3 2 0 0\n1 0 0\n2 1 0\n3 0.5 " + height + "\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n";
@@ -34,8 +43,8 @@ TEST(SizeEstimate, NeedleIsRefusedUpFrontNamingItsAngle) {
   const std::string poly = pdd::test::write_temp_file(
       "needle.poly", "3 2 0 0\n1 0 1\n2 1 0\n3 0.5 4444444422\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n");
   const auto t0 = std::chrono::steady_clock::now();
-  const auto r = pdd::test::run_command("ulimit -v 1048576; '" + std::string(PDD_MESH_EXE) + "' " +
-                                        poly + " --max-area 1.48e7 -q");
+  const auto r =
+      pdd::test::run_command("ulimit -v 1048576; " + pdd_mesh(poly + " --max-area 1.48e7 -q"));
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   EXPECT_EQ(r.code, 1) << r.output;
@@ -49,7 +58,7 @@ TEST(SizeEstimate, SpikeIsMeshedAndRefusedBelowItsEstimate) {
   // Aspect 10^4:1: the estimate follows the wedge (about 5.9e4 triangles, 7.6e3 by area).
   const std::string poly = pdd::test::write_temp_file("spike.poly", spike_poly("10000"));
   const auto stats = pdd::test::temp_path("spike.json");
-  const std::string exe = "'" + std::string(PDD_MESH_EXE) + "' " + poly + " --max-area 1 -q";
+  const std::string exe = pdd_mesh(poly + " --max-area 1 -q");
   const auto ok = pdd::test::run_command(exe + " --stats " + stats.string());
   ASSERT_EQ(ok.code, 0) << ok.output;
   const auto j = read_json(stats);
@@ -86,9 +95,8 @@ TEST(SizeEstimate, WithinAFactorTwoOnTheSharedGeometries) {
   for (const input& in : inputs) {
     const auto stats = pdd::test::temp_path("shared.json");
     const std::string area = *in.max_area ? std::string(" --max-area ") + in.max_area : "";
-    const auto r =
-        pdd::test::run_command("'" + std::string(PDD_MESH_EXE) + "' " + (dir / in.file).string() +
-                               area + " --subdomains 1 -q --stats " + stats.string());
+    const auto r = pdd::test::run_command(
+        pdd_mesh((dir / in.file).string() + area + " --subdomains 1 -q --stats " + stats.string()));
     ASSERT_EQ(r.code, 0) << in.file << area << "\n" << r.output;
     const auto j = read_json(stats);
     const double ratio = j["estimated_triangles"].get<double>() / j["triangles"].get<double>();

@@ -36,8 +36,8 @@ pdd::pslg spike(double h) {
 TEST(EstimateMeshSize, UniformWhereNoFeatureIsSmallerThanTheMesh) {
   // A unit square at A = 1e-4: nothing is smaller than the triangles, so the estimate is
   // area / (0.656 A) exactly (and the cause is empty).
-  const auto e = pdd::estimate_mesh_size(polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), 1e-4,
-                                         pdd::any_sizing{});
+  const auto e =
+      pdd::estimate_mesh_size(polygon({{0, 0}, {1, 0}, {1, 1}, {0, 1}}), 1e-4, pdd::any_sizing{});
   EXPECT_NEAR(e.triangles, 1.0 / (0.656e-4), 1e-6);
   EXPECT_NEAR(e.area_triangles, e.triangles, 1e-6);
   EXPECT_EQ(e.cause.first.id, pdd::no_index);
@@ -45,8 +45,8 @@ TEST(EstimateMeshSize, UniformWhereNoFeatureIsSmallerThanTheMesh) {
 
 TEST(EstimateMeshSize, CorridorCountsByItsWidth) {
   // 1 x 100 with no area bound: about 100 / (0.656 * 1.2 * 1^2) triangles across its width.
-  const auto e = pdd::estimate_mesh_size(polygon({{0, 0}, {100, 0}, {100, 1}, {0, 1}}),
-                                         INFINITY, pdd::any_sizing{});
+  const auto e = pdd::estimate_mesh_size(polygon({{0, 0}, {100, 0}, {100, 1}, {0, 1}}), INFINITY,
+                                         pdd::any_sizing{});
   EXPECT_GT(e.triangles, 100.0 / (0.656 * pdd::across_area_factor));
   EXPECT_LT(e.triangles, 2.0 * 100.0 / (0.656 * pdd::across_area_factor));
   EXPECT_TRUE(std::isinf(e.area_triangles));

@@ -50,7 +50,23 @@ public:
   };
 
   /// Integrates over triangle t of the field (the top-level pieces of one n x n subdivision).
+  /// A piece where F is below a quarter of the smallest feature bound sampled on its input
+  /// triangle (corners, edge midpoints, centroid) counts by F alone without sampling the gap:
+  /// with a sizing field's n x n subdivision most pieces are such.
   double top(std::size_t t, const point& a, const point& b, const point& c) {
+    if (t != bounded_triangle_) {
+      bounded_triangle_ = t;
+      triangle_bound_ = triangle_bound(t);
+    }
+    const point x{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0};
+    const double f = std::min(max_area_, static_cast<double>(sizing_.area_at(x)));
+    if (4.0 * f < triangle_bound_) {
+      const double by_area =
+          std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2.0 / f;
+      area_integral += by_area;
+      ++pieces_;
+      return by_area;
+    }
     return piece(t, {a, field_.at(a, t)}, {b, field_.at(b, t)}, {c, field_.at(c, t)}, 0);
   }
 
@@ -109,11 +125,28 @@ private:
     return (across ? c_across_ : c_) * g.gap * g.gap;
   }
 
+  /// The smallest feature bound at the corners, edge midpoints and centroid of triangle t.
+  double triangle_bound(std::size_t t) const {
+    const auto& v = field_.triangle(t);
+    const pslg& g = field_.domain();
+    const point a = g.vertices[v[0]], b = g.vertices[v[1]], c = g.vertices[v[2]];
+    double lo = std::numeric_limits<double>::infinity();
+    for (const point& p : {a, b, c, mid(a, b), mid(b, c), mid(c, a),
+                           point{(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0}}) {
+      gap_sample s = field_.at(p, t);
+      if (s.pair.apex != no_index) s.gap = std::max(s.gap, shield_gap(s.pair.apex));
+      lo = std::min(lo, bound(s));
+    }
+    return lo;
+  }
+
+  static point mid(const point& p, const point& q) { return {(p.x + q.x) / 2, (p.y + q.y) / 2}; }
+
   static double squared(const point& p, const point& q) {
     return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
   }
   corner middle(std::size_t t, const corner& p, const corner& q) const {
-    const point m{(p.p.x + q.p.x) / 2, (p.p.y + q.p.y) / 2};
+    const point m = mid(p.p, q.p);
     return {m, field_.at(m, t)};
   }
 
@@ -177,6 +210,8 @@ private:
   const S& sizing_;
   double c_, c_across_, shield_area_, lfs_min_;
   std::size_t pieces_ = 0;
+  std::size_t bounded_triangle_ = static_cast<std::size_t>(-1);
+  double triangle_bound_ = 0.0;
 };
 
 } // namespace pdd::detail
