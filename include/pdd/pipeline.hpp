@@ -68,8 +68,10 @@ template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitio
           Executor E = tbb_executor>
 class pipeline {
 public:
-  /// Checks the options (check_generate_options), validates the domain (pdd::validate) and
-  /// plans N (automatic_subdomains when options.subdomains == 0).
+  /// Checks the options (check_generate_options), validates the domain (pdd::validate),
+  /// estimates the mesh size (pdd::estimate_mesh_size: the area bound, the sizing field and the
+  /// local feature size; size_estimate()) and plans N from it (automatic_subdomains when
+  /// options.subdomains == 0 and some area bound is given; N = 1 without any).
   /// \throws pdd::decomposition_error for contradicting options; pdd::geometry_error for an
   /// invalid domain.
   pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
