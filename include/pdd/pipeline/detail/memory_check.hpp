@@ -65,7 +65,7 @@ inline std::string describe_estimate(const pslg& g, const mesh_size_estimate& e)
 }
 
 inline std::string gib(double bytes) {
-  return format("%.1f GiB", bytes / 1073741824.0);
+  return format("%.3g GiB", bytes / 1073741824.0);
 }
 
 /// \throws pdd::limit_error when the planned triangles exceed p.max_triangles (when set), or
