@@ -1,7 +1,7 @@
 /// \file mesh_options.hpp
 /// The options pdd-mesh and pdd-mesh-mpi share (the input, the quality and sizing criteria, N,
-/// threads, the per-subdomain output, --stats, --quiet), registered once for both, and the
-/// generate_options they give.
+/// threads, --max-triangles, the per-subdomain output, --stats, --quiet), registered once for both,
+/// and the generate_options they give.
 #pragma once
 
 #include "sizing_options.hpp"
@@ -25,6 +25,7 @@ struct mesh_options {
   double min_angle = pdd::mesh_criteria{}.min_angle_deg;
   double max_area = std::numeric_limits<double>::infinity();
   std::size_t subdomains = 0;
+  std::size_t max_triangles = 0; ///< 0: what fits in memory
   unsigned threads = 0;
   bool quiet = false;
 };
@@ -49,6 +50,10 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
   app.add_option("--subdomains", o.subdomains,
                  "number of subdomains (1: monolithic kernel; default: automatic)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--max-triangles", o.max_triangles,
+                 "refuse, before meshing, a run whose estimated triangle count exceeds N "
+                 "(default: what fits in physical memory)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--threads", o.threads, threads_help)->check(CLI::Range(1u, 4096u));
   auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
                              "write one .vtu per subdomain and an index mesh.pvtu into DIR "
@@ -58,8 +63,8 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
   return per;
 }
 
-/// The generate_options of a run on `domain` (read and validated): the criteria, N, threads
-/// and the sizing field (see sizing_field; `sizing_kind` names it for --stats).
+/// The generate_options of a run on `domain` (read and validated): the criteria, N, threads,
+/// the triangle limit and the sizing field (see sizing_field; `sizing_kind` names it for --stats).
 /// \throws as sizing_field.
 inline pdd::generate_options generate_options_for(const mesh_options& o, const pdd::pslg& domain,
                                                   std::string& sizing_kind) {
@@ -67,6 +72,7 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
   g.criteria = {.min_angle_deg = o.min_angle, .max_area = o.max_area};
   g.subdomains = o.subdomains;
   g.threads = o.threads;
+  g.max_triangles = o.max_triangles;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
 }

@@ -5,9 +5,10 @@
 //            [--subdomains N] [--threads T] [--output-per-subdomain DIR] [--verify]
 //            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg]
 //            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
-//            [--sizing EXPR] [--background FILE.node] [--area-grid FILE]
+//            [--sizing EXPR] [--background FILE.node] [--area-grid FILE] [--max-triangles N]
 //
-// Exit codes: 0 ok, 1 bad input, 2 usage, 3 verification failed, 4 internal error (among them
+// Exit codes: 0 ok, 1 bad input (also a run refused up front: its estimated size exceeds
+// --max-triangles or memory), 2 usage, 3 verification failed, 4 internal error (among them
 // a triangle outside the shielded corners that violates the angle or area bound: every mesh is
 // checked before it is written, and nothing is written then).
 #include "exit_code.hpp"
@@ -229,6 +230,7 @@ void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) 
   j["input"] = o.input;
   j["triangles"] = r.triangles();
   j["vertices"] = r.mesh ? nlohmann::json(r.mesh->vertices.size()) : nullptr;
+  j["estimated_triangles"] = gs.estimated_triangles; // the up-front estimate
   j["subdomains"] = gs.subdomains;
   j["threads"] = gs.threads;
   j["kernel"] = o.kernel;

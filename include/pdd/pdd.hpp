@@ -35,6 +35,7 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/geometry/domain_faces.hpp>
+#include <pdd/geometry/feature_gap.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
@@ -58,6 +59,7 @@
 #include <pdd/sizing/background_mesh.hpp>
 #include <pdd/sizing/grid.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>
+#include <pdd/sizing/mesh_size_estimate.hpp>
 #include <pdd/sizing/min_sizing.hpp>
 #include <pdd/sizing/regional.hpp>
 #include <pdd/sizing/sizing_range.hpp>

@@ -68,8 +68,10 @@ template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitio
           Executor E = tbb_executor>
 class pipeline {
 public:
-  /// Checks the options (check_generate_options), validates the domain (pdd::validate) and
-  /// plans N (automatic_subdomains when options.subdomains == 0).
+  /// Checks the options (check_generate_options), validates the domain (pdd::validate),
+  /// estimates the mesh size (pdd::estimate_mesh_size: the area bound, the sizing field and the
+  /// local feature size; size_estimate()) and plans N from it (automatic_subdomains when
+  /// options.subdomains == 0 and some area bound is given; N = 1 without any).
   /// \throws pdd::decomposition_error for contradicting options; pdd::geometry_error for an
   /// invalid domain.
   pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
@@ -80,16 +82,16 @@ public:
     validate(domain_);
     area_ = domain_area(domain_);
     stats_.threads = executor_.concurrency();
-    if (options_.sizing) {
-      sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
-      stats_.estimated_triangles =
-          detail::estimate_graded_triangles(domain_, options_.criteria, options_.sizing);
-    } else {
-      stats_.estimated_triangles = estimate_triangles(area_, options_.criteria);
-    }
-    stats_.subdomains = options_.subdomains != 0 ? options_.subdomains
-                                                 : automatic_subdomains(stats_.estimated_triangles,
-                                                                        stats_.threads, options_);
+    if (options_.sizing) sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
+    estimate_ = detail::estimate_plan(domain_, options_.criteria, options_.sizing,
+                                      decoupling_criteria().max_area);
+    stats_.estimated_triangles = estimate_.triangles;
+    // without any area bound the mesh is graded by the geometry alone: the kernel meshes it
+    const bool bounded = options_.sizing || std::isfinite(options_.criteria.max_area);
+    stats_.subdomains =
+        options_.subdomains != 0 ? options_.subdomains
+        : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads, options_)
+                  : 1;
   }
 
   /// N, the number of subdomains this pipeline uses.
@@ -99,14 +101,24 @@ public:
   const generate_options& options() const noexcept { return options_; }
   const pslg& domain() const noexcept { return domain_; }
 
-  /// \throws pdd::limit_error when meshing into a sink of type S (kept in memory or not, see
-  /// sink_retains_meshes) would not fit in physical memory (see estimate_peak_bytes).
+  /// \throws pdd::limit_error when meshing into a sink of type S would exceed
+  /// options.max_triangles, or (max_triangles 0, check_memory) physical memory (kept in memory
+  /// or not, see sink_retains_meshes and estimate_peak_bytes), or 32-bit indices in a kept
+  /// mesh; the message gives the estimate, the feature that causes it and the memory needed.
   template <MeshSink S>
   void check_memory() const {
-    if (options_.check_memory)
-      detail::check_memory_plan(planned_triangles(), stats_.subdomains, stats_.threads,
-                                sink_retains_meshes<S>, options_.criteria.max_area);
+    detail::check_size_plan({.triangles = planned_triangles(),
+                             .estimate = &estimate_,
+                             .domain = &domain_,
+                             .subdomains = stats_.subdomains,
+                             .threads = stats_.threads,
+                             .retains_meshes = sink_retains_meshes<S>,
+                             .max_triangles = options_.max_triangles,
+                             .check_memory = options_.check_memory});
   }
+
+  /// The size estimate the plan uses (pdd::estimate_mesh_size) and its cause.
+  const mesh_size_estimate& size_estimate() const noexcept { return estimate_; }
 
   /// Stage 1: MADD into N subdomains (nothing when N == 1; the decomposition is then empty).
   /// \throws pdd::decomposition_error when the domain cannot be split as asked.
@@ -198,7 +210,7 @@ public:
     return stats_;
   }
 
-  /// The triangles the memory check plans for: the estimate from the area bound, plus, once
+  /// The triangles the size check plans for: the estimate (pdd::estimate_mesh_size), plus, once
   /// the decoupling path exists, 4 per split point (the kernel grades out from the separators).
   double planned_triangles() const noexcept {
     return stats_.estimated_triangles + 4.0 * static_cast<double>(stats_.split_points);
@@ -308,6 +320,7 @@ private:
   P partitioner_;
   E executor_;
   double area_ = 0.0;
+  mesh_size_estimate estimate_;
   /// Lower bound of the sizing field over the domain (infinity without a field).
   double sizing_min_ = std::numeric_limits<double>::infinity();
   bool decomposed_ = false, decoupled_ = false;

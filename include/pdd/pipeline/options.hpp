@@ -42,8 +42,13 @@ struct generate_options {
   double k_override = 0.0;
   /// Invariance repair rounds (see mesh_subdomains; the theory says none are ever needed).
   unsigned max_repairs = 3;
-  /// Refuse (pdd::limit_error) an area bound whose mesh would not fit in physical memory.
+  /// Refuse (pdd::limit_error) an area bound whose mesh would not fit in physical memory
+  /// (when max_triangles is 0).
   bool check_memory = true;
+  /// Refuse (pdd::limit_error), before any work, a run whose estimated triangle count
+  /// (pdd::estimate_mesh_size: the area bound and the local feature size) exceeds this. 0:
+  /// the limit is what fits in physical memory with the sink (check_memory).
+  std::size_t max_triangles = 0;
   /// Automatic N: the number of triangles aimed at per subdomain (see automatic_subdomains).
   double target_subdomain_triangles = 60000.0;
   /// Automatic N: at least this many subdomains per thread when running on several threads.

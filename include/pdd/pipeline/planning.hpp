@@ -5,6 +5,7 @@
 
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/pipeline/options.hpp>
+#include <pdd/sizing/mesh_size_estimate.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -13,13 +14,11 @@
 
 namespace pdd {
 
-/// Mean triangle area of a quality mesh under a uniform area bound A, as a fraction of A
-/// (CGAL's kernel, 20.7 deg, measured on squares from 19K to 4M triangles: 0.655-0.659).
-inline constexpr double mean_triangle_area_fraction = 0.656;
-
 /// Expected triangle count of a uniform mesh of a domain of the given area under bound A:
-/// area / (0.656 A); infinity when A is not finite (the mesh is then graded by the geometry
-/// and small). Complexity O(1).
+/// area / (0.656 A) (pdd::mean_triangle_area_fraction); infinity when A is not finite. The
+/// pipeline plans with pdd::estimate_mesh_size instead, which also bounds the triangle size by
+/// the local feature size; this is its value where no feature is smaller than the mesh.
+/// Complexity O(1).
 inline double estimate_triangles(double domain_area, const mesh_criteria& criteria) {
   if (!std::isfinite(criteria.max_area)) return std::numeric_limits<double>::infinity();
   return domain_area / (mean_triangle_area_fraction * criteria.max_area);

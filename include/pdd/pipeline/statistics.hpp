@@ -22,9 +22,11 @@ struct generate_timings {
 
 /// What a pipeline run did.
 struct generate_statistics {
-  std::size_t subdomains = 0;       ///< N used
-  unsigned threads = 0;             ///< the executor's concurrency
-  double estimated_triangles = 0.0; ///< the plan's estimate (infinity without an area bound)
+  std::size_t subdomains = 0; ///< N used
+  unsigned threads = 0;       ///< the executor's concurrency
+  /// The plan's estimate (pdd::estimate_mesh_size: the integral of 1 / (0.656 F) with F also
+  /// bounded by the local feature size).
+  double estimated_triangles = 0.0;
   double k = 0.0;                   ///< decoupling parameter (0 when N == 1)
   double lfs_min = 0.0;             ///< min over subdomains (0 when N == 1)
   double shortest_separator = 0.0;  ///< L (0 when N == 1)

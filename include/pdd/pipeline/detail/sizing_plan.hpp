@@ -1,6 +1,7 @@
 /// \file sizing_plan.hpp
-/// The pipeline's planning with a sizing field: the expected triangle count (Algorithm 7.2)
-/// and the field's lower bound m(D_i) over every subdomain (for the graded path, Theorem 22).
+/// The pipeline's planning: the expected triangle count (Algorithm 7.2, bounded by the local
+/// feature size) and, with a sizing field, the field's lower bound m(D_i) over every subdomain (for
+/// the graded path, Theorem 22).
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
@@ -10,23 +11,23 @@
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/pipeline/planning.hpp>
 #include <pdd/sizing/any_sizing.hpp>
-#include <pdd/sizing/inverse_area_integral.hpp>
+#include <pdd/sizing/mesh_size_estimate.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 
 #include <algorithm>
-#include <limits>
+#include <cstddef>
 #include <vector>
 
 namespace pdd::detail {
 
-/// Expected triangles of a mesh graded by `sizing` (and criteria.max_area): the integral of
-/// 1 / (0.656 F) over the domain (Algorithm 7.2); infinity when that is not positive (no
-/// finite bound anywhere). Complexity: that of pdd::inverse_area_integral.
-inline double estimate_graded_triangles(const pslg& domain, const mesh_criteria& criteria,
-                                        const any_sizing& sizing) {
-  const double e =
-      inverse_area_integral(domain, criteria.max_area, sizing) / mean_triangle_area_fraction;
-  return e > 0.0 ? e : std::numeric_limits<double>::infinity();
+/// The plan's triangle estimate (Algorithm 7.2, bounded by the local feature size): pdd::
+/// estimate_mesh_size under criteria.max_area and the sizing field (2^16 samples of the field;
+/// one piece per input triangle for a uniform bound), shields built for `shield_area`.
+/// Complexity: that of pdd::estimate_mesh_size.
+inline mesh_size_estimate estimate_plan(const pslg& domain, const mesh_criteria& criteria,
+                                        const any_sizing& sizing, double shield_area) {
+  return estimate_mesh_size(domain, criteria.max_area, sizing, sizing ? std::size_t{1} << 16 : 1,
+                            shield_area);
 }
 
 /// m(D_i) for every subdomain: pdd::sizing_range's lower bound over the subdomain's bounding
