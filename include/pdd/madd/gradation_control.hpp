@@ -11,6 +11,7 @@
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/detail/gradation_control.hpp>
+#include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/sizing/any_sizing.hpp>
@@ -26,56 +27,6 @@
 #include <vector>
 
 namespace pdd {
-
-/// Options of Algorithm 7.1 (designated initialisers welcome).
-struct gradation_options {
-  /// R1 of Condition 1: M(D_i) <= R1 m(D_i) for every subdomain.
-  double r1 = 1.425;
-  /// R2 of Condition 2: m(D_i) <= R2 m(D_j) for every two subdomains sharing a separator;
-  /// R1 <= R2 < 3 (7.3; R2 < 3 gives k_j / k_i < sqrt 3, the existence of the decoupling
-  /// path, 7.4).
-  double r2 = 1.5;
-  /// T of Condition 3 (7.6): at most this many expected triangles per subdomain (load
-  /// balance and memory); infinity: no Condition 3.
-  double max_subdomain_triangles = std::numeric_limits<double>::infinity();
-  /// Termination rule: a subdomain that expects fewer triangles than this is not split for
-  /// Conditions 1-2 (a field with a jump of ratio > R2, as the piecewise constant .poly
-  /// regional areas, meets Condition 2 for no decomposition; the decoupling path then lowers
-  /// k where relation 7.1 needs it, pdd::decouple_graded). 0: split until the conditions hold.
-  double min_subdomain_triangles = 1000.0;
-  /// At least this many subdomains: while fewer exist every subdomain is split, the largest
-  /// expected work first (a requested N).
-  std::size_t min_subdomains = 1;
-  /// At most this many subdomains (MADD's `subdomains`): the decomposition stops there, and
-  /// gradation_report::capped says that some subdomain was still non-acceptable.
-  std::size_t max_subdomains = 100000;
-  /// A uniform area bound combined with the field: m and M are taken of min(max_area, F).
-  double max_area = std::numeric_limits<double>::infinity();
-  /// The mean triangle area as a fraction of the bound (pdd::mean_triangle_area_fraction):
-  /// expected triangles of D = integral over D of 1 / (fraction * min(max_area, F)).
-  double mean_area_fraction = 0.656;
-};
-
-/// \throws pdd::decomposition_error naming the field: R1 <= 1, R2 < R1 or R2 >= 3, T <= 0,
-/// a negative minimum, max_subdomains < max(1, min_subdomains), max_area <= 0 or the
-/// fraction outside (0, 1].
-inline void check_gradation_options(const gradation_options& o) {
-  const auto bad = [](const std::string& what) {
-    throw decomposition_error("gradation_options: " + what);
-  };
-  if (!(o.r1 > 1.0) || !std::isfinite(o.r1)) bad("r1 must be > 1 (Condition 1)");
-  if (!(o.r2 >= o.r1 && o.r2 < 3.0))
-    bad("r2 = " + std::to_string(o.r2) + " must satisfy r1 <= r2 < 3 (7.3: the gradation inside a "
-        "subdomain at most that across a separator; 7.4: r2 < 3 for k_j / k_i < sqrt 3)");
-  if (!(o.max_subdomain_triangles > 0.0)) bad("max_subdomain_triangles (T) must be > 0");
-  if (!(o.min_subdomain_triangles >= 0.0) || !std::isfinite(o.min_subdomain_triangles))
-    bad("min_subdomain_triangles must be finite and >= 0");
-  if (o.max_subdomains < std::max<std::size_t>(1, o.min_subdomains))
-    bad("max_subdomains must be >= max(1, min_subdomains)");
-  if (!(o.max_area > 0.0)) bad("max_area must be > 0");
-  if (!(o.mean_area_fraction > 0.0 && o.mean_area_fraction <= 1.0))
-    bad("mean_area_fraction must be in (0, 1]");
-}
 
 /// The conditions of Algorithm 7.1 measured on a decomposition.
 struct gradation_report {
@@ -93,24 +44,16 @@ struct gradation_report {
   bool capped = false;
 };
 
-/// Measures Conditions 1-3 of o on d (neighbours: the pairs of d.interfaces).
-/// Complexity: one pdd::sizing_range and one constrained triangulation per subdomain.
-inline gradation_report measure_gradation(const decomposition& d, const any_sizing& field,
-                                          const gradation_options& o) {
-  const detail::leaf_measuring measure{field, o.max_area, o.mean_area_fraction};
+namespace detail {
+/// The report of d from the measures of its subdomains (neighbours: d.interfaces).
+inline gradation_report gradation_report_of(const decomposition& d,
+                                            const std::vector<leaf_measure>& m,
+                                            const gradation_options& o) {
   gradation_report rep;
-  std::vector<detail::leaf_measure> m(d.subdomains.size());
-  for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
-    std::vector<std::vector<point>> loops;
-    for (const auto& loop : d.subdomains[s].loops) {
-      loops.emplace_back();
-      for (const index_t v : loop)
-        loops.back().push_back(d.vertices[v]);
-    }
-    m[s] = measure(loops);
-    rep.bounds.push_back({m[s].lo, m[s].hi});
-    rep.expected_triangles.push_back(m[s].expected);
-    if (std::isfinite(m[s].lo)) rep.r1_max = std::max(rep.r1_max, m[s].hi / m[s].lo);
+  for (const leaf_measure& x : m) {
+    rep.bounds.push_back({x.lo, x.hi});
+    rep.expected_triangles.push_back(x.expected);
+    if (std::isfinite(x.lo)) rep.r1_max = std::max(rep.r1_max, x.hi / x.lo);
   }
   std::vector<std::pair<std::size_t, std::size_t>> pairs;
   for (const interface_curve& c : d.interfaces)
@@ -122,11 +65,34 @@ inline gradation_report measure_gradation(const decomposition& d, const any_sizi
     if (std::isfinite(a) && std::isfinite(b)) rep.r2_max = std::max({rep.r2_max, a / b, b / a});
     if (a > o.r2 * b || b > o.r2 * a) ++rep.condition_2_unmet;
   }
-  for (const unsigned f : detail::failed_conditions(m, {}, o.r1, o.r2, o.max_subdomain_triangles)) {
-    rep.condition_1_unmet += (f & detail::fails_condition_1) != 0u ? 1 : 0;
-    rep.condition_3_unmet += (f & detail::fails_condition_3) != 0u ? 1 : 0;
+  for (const unsigned f : failed_conditions(m, {}, o.r1, o.r2, o.max_subdomain_triangles)) {
+    rep.condition_1_unmet += (f & fails_condition_1) != 0u ? 1 : 0;
+    rep.condition_3_unmet += (f & fails_condition_3) != 0u ? 1 : 0;
   }
   return rep;
+}
+
+/// Subdomain s of d as loops of points.
+inline std::vector<std::vector<point>> subdomain_points(const decomposition& d, std::size_t s) {
+  std::vector<std::vector<point>> loops;
+  for (const auto& loop : d.subdomains[s].loops) {
+    loops.emplace_back();
+    for (const index_t v : loop)
+      loops.back().push_back(d.vertices[v]);
+  }
+  return loops;
+}
+} // namespace detail
+
+/// Measures Conditions 1-3 of o on d (neighbours: the pairs of d.interfaces).
+/// Complexity: one pdd::sizing_range and one constrained triangulation per subdomain.
+inline gradation_report measure_gradation(const decomposition& d, const any_sizing& field,
+                                          const gradation_options& o) {
+  const detail::leaf_measuring measure{field, o.max_area, o.mean_area_fraction};
+  std::vector<detail::leaf_measure> m;
+  for (std::size_t s = 0; s < d.subdomains.size(); ++s)
+    m.push_back(measure(detail::subdomain_points(d, s)));
+  return detail::gradation_report_of(d, m, o);
 }
 
 namespace detail {
@@ -204,7 +170,13 @@ decomposition gradation_controlled_decompose(const pslg& g, const any_sizing& fi
     throw decomposition_error(e.what() + detail::describe_wanted(*state));
   }
   if (report) {
-    *report = measure_gradation(d, field, o);
+    std::vector<detail::leaf_measure> m;
+    for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
+      const auto loops = detail::subdomain_points(d, s);
+      const auto it = state->last_index.find(state->key_of(loops.front(), 0.0));
+      m.push_back(it != state->last_index.end() ? state->last[it->second] : state->measure(loops));
+    }
+    *report = detail::gradation_report_of(d, m, o);
     report->capped = d.subdomains.size() >= o.max_subdomains &&
                      std::any_of(state->last_priority.begin(), state->last_priority.end(),
                                  [](double p) { return p > 0.0; });

@@ -47,7 +47,7 @@ struct leaf_measuring {
 
   /// \pre loops[0] is the outer loop (points, any orientation), loops[1..] the holes.
   leaf_measure operator()(std::span<const std::vector<point>> loops) const {
-    bbox b;
+    pdd::bbox b;
     for (const point& p : loops.front())
       b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x),
            std::max(b.ymax, p.y)};
@@ -133,14 +133,19 @@ struct gradation_policy_state {
   std::vector<leaf_measure> last;
   std::vector<unsigned> last_fail;
   std::vector<double> last_priority;
+  /// key_of(outer loop, 0) of every leaf of the last call -> its index (the final report
+  /// finds the measures of the assembled subdomains there).
+  std::unordered_map<std::string, std::size_t> last_index;
 
-  static std::string key_of(const madd_leaf_view& v) {
-    bbox b;
-    for (const point& p : v.loops.front())
+  /// The bitwise key of a box of points (and of an area).
+  template <class Loop>
+  static std::string key_of(const Loop& outer, double area) {
+    pdd::bbox b;
+    for (const point& p : outer)
       b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x),
            std::max(b.ymax, p.y)};
     std::string k(5 * sizeof(double), '\0');
-    const double vals[5] = {v.area, b.xmin, b.ymin, b.xmax, b.ymax};
+    const double vals[5] = {b.xmin, b.ymin, b.xmax, b.ymax, area};
     for (int i = 0; i < 5; ++i)
       for (std::size_t j = 0; j < sizeof(double); ++j)
         k[i * sizeof(double) + j] =
@@ -149,7 +154,7 @@ struct gradation_policy_state {
   }
 
   leaf_measure measure_view(const madd_leaf_view& v) {
-    const std::string k = key_of(v);
+    const std::string k = key_of(v.loops.front(), v.area);
     if (const auto it = cache.find(k); it != cache.end()) return it->second;
     std::vector<std::vector<point>> loops;
     for (const auto& l : v.loops)
@@ -167,8 +172,11 @@ struct gradation_policy_state {
   /// work; the smallest positive double where nothing is expected).
   std::vector<double> operator()(std::span<const madd_leaf_view> leaves) {
     last.resize(leaves.size());
-    for (std::size_t i = 0; i < leaves.size(); ++i)
+    last_index.clear();
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
       last[i] = measure_view(leaves[i]);
+      last_index.emplace(key_of(leaves[i].loops.front(), 0.0), i);
+    }
     const auto pairs = shared_edge_pairs(leaves.size(), [&](std::size_t i) -> const auto& {
       return leaves[i].loops;
     });
