@@ -187,10 +187,10 @@ public:
       timed.consume(0, std::move(m));
       timed.finish();
     } else {
-      meshing_statistics ms = mesh_subdomains(decoupled_decomposition_,
-                                              {options_.criteria, options_.max_repairs,
-                                               options_.sizing, gradation_.expected_triangles},
-                                              mesher_, executor_, timed);
+      meshing_statistics ms = mesh_subdomains(
+          decoupled_decomposition_,
+          {options_.criteria, options_.max_repairs, options_.sizing, gradation_.expected_triangles},
+          mesher_, executor_, timed);
       stats_.triangles = ms.triangles();
       stats_.interface_splits = ms.interface_splits;
       stats_.shield_splits = ms.shield_splits;
@@ -327,6 +327,9 @@ private:
     stats_.shielded_triangles = 0;
     stats_.decomposition = {};
     stats_.lowered_k = 0;
+    stats_.gradation_controlled = stats_.gradation_capped = false;
+    stats_.r1_max = stats_.r2_max = 0.0;
+    stats_.condition_1_unmet = stats_.condition_2_unmet = 0;
     gradation_ = {};
     decomposition_ = {};
     decoupled_decomposition_ = {};

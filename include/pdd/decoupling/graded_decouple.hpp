@@ -113,8 +113,7 @@ inline std::size_t lower_k_for_relation_7_1(const std::vector<path_edge>& path,
 template <Executor E = sequential_executor>
 graded_decoupling decouple_graded(decomposition d, const mesh_criteria& criteria,
                                   const std::vector<double>& area_lower_bound,
-                                  const E& executor = {},
-                                  const graded_decoupling_options& o = {}) {
+                                  const E& executor = {}, const graded_decoupling_options& o = {}) {
   detail::check_decomposition(d);
   const std::size_t m = d.subdomains.size();
   if (area_lower_bound.size() != m)

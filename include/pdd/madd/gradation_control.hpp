@@ -35,8 +35,8 @@ struct gradation_report {
   std::vector<sizing_bounds> bounds;
   /// Expected triangles per subdomain (Algorithm 7.2; the executor's order of work).
   std::vector<double> expected_triangles;
-  double r1_max = 1.0; ///< max over subdomains of M / m (Condition 1: <= R1)
-  double r2_max = 1.0; ///< max over separators of m_i / m_j (Condition 2: <= R2)
+  double r1_max = 1.0;               ///< max over subdomains of M / m (Condition 1: <= R1)
+  double r2_max = 1.0;               ///< max over separators of m_i / m_j (Condition 2: <= R2)
   std::size_t condition_1_unmet = 0; ///< subdomains with M > R1 m
   std::size_t condition_2_unmet = 0; ///< neighbour pairs with m_i > R2 m_j
   std::size_t condition_3_unmet = 0; ///< subdomains expecting more than T triangles
@@ -106,8 +106,8 @@ inline std::string general_number(double v) {
 /// "; Algorithm 7.1 still wanted: subdomain i (m .., M .., expected .., fails Condition ..)"
 /// for the leaves the policy last wanted split (at most 8).
 inline std::string describe_wanted(const gradation_policy_state& s) {
-  std::string out = "; Algorithm 7.1 (R1 " + general_number(s.r1) + ", R2 " +
-                    general_number(s.r2) + ") still wanted split:";
+  std::string out = "; Algorithm 7.1 (R1 " + general_number(s.r1) + ", R2 " + general_number(s.r2) +
+                    ") still wanted split:";
   std::size_t listed = 0;
   for (std::size_t i = 0; i < s.last_priority.size() && listed < 8; ++i) {
     if (!(s.last_priority[i] > 0.0)) continue;

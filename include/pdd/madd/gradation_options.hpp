@@ -51,7 +51,8 @@ inline void check_gradation_options(const gradation_options& o) {
   };
   if (!(o.r1 > 1.0) || !std::isfinite(o.r1)) bad("r1 must be > 1 (Condition 1)");
   if (!(o.r2 >= o.r1 && o.r2 < 3.0))
-    bad("r2 = " + std::to_string(o.r2) + " must satisfy r1 <= r2 < 3 (7.3: the gradation inside a "
+    bad("r2 = " + std::to_string(o.r2) +
+        " must satisfy r1 <= r2 < 3 (7.3: the gradation inside a "
         "subdomain at most that across a separator; 7.4: r2 < 3 for k_j / k_i < sqrt 3)");
   if (!(o.max_subdomain_triangles > 0.0)) bad("max_subdomain_triangles (T) must be > 0");
   if (!(o.min_subdomain_triangles >= 0.0) || !std::isfinite(o.min_subdomain_triangles))

@@ -93,7 +93,8 @@ std::vector<std::pair<std::size_t, std::size_t>> shared_edge_pairs(std::size_t n
       for (std::size_t k = 0; k < loop.size(); ++k) {
         const auto [it, inserted] =
             owner.emplace(canonical_edge(loop[k], loop[(k + 1) % loop.size()]), i);
-        if (!inserted && it->second != i) pairs.emplace_back(std::min(it->second, i), std::max(it->second, i));
+        if (!inserted && it->second != i)
+          pairs.emplace_back(std::min(it->second, i), std::max(it->second, i));
       }
   std::sort(pairs.begin(), pairs.end());
   pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
@@ -177,18 +178,16 @@ struct gradation_policy_state {
       last[i] = measure_view(leaves[i]);
       last_index.emplace(key_of(leaves[i].loops.front(), 0.0), i);
     }
-    const auto pairs = shared_edge_pairs(leaves.size(), [&](std::size_t i) -> const auto& {
-      return leaves[i].loops;
-    });
+    const auto pairs = shared_edge_pairs(
+        leaves.size(), [&](std::size_t i) -> const auto& { return leaves[i].loops; });
     last_fail = failed_conditions(last, pairs, r1, r2, t);
     const bool few = leaves.size() < min_leaves;
     last_priority.assign(leaves.size(), 0.0);
     for (std::size_t i = 0; i < leaves.size(); ++i) {
       const unsigned f = last_fail[i];
-      const bool want = (f & fails_condition_3) != 0u ||
-                        (f != 0u && last[i].expected >= min_triangles) || few;
-      if (want)
-        last_priority[i] = std::max(last[i].expected, std::numeric_limits<double>::min());
+      const bool want =
+          (f & fails_condition_3) != 0u || (f != 0u && last[i].expected >= min_triangles) || few;
+      if (want) last_priority[i] = std::max(last[i].expected, std::numeric_limits<double>::min());
     }
     return last_priority;
   }
