@@ -8,6 +8,7 @@
 
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/madd/gradation_options.hpp>
 #include <pdd/pipeline/options.hpp>
 
 #include <CLI/CLI.hpp>
@@ -27,6 +28,7 @@ struct mesh_options {
   std::size_t subdomains = 0;
   std::size_t max_triangles = 0; ///< 0: what fits in memory
   unsigned threads = 0;
+  pdd::gradation_options gradation; // --r1, --r2 (Algorithm 7.1 of the graded method)
   bool quiet = false;
 };
 
@@ -55,6 +57,10 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
                  "(default: what fits in physical memory)")
       ->check(CLI::PositiveNumber);
   app.add_option("--threads", o.threads, threads_help)->check(CLI::Range(1u, 4096u));
+  app.add_option("--r1", o.gradation.r1,
+                 "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
+  app.add_option("--r2", o.gradation.r2,
+                 "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
   auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
                              "write one .vtu per subdomain and an index mesh.pvtu into DIR "
                              "(nothing is kept in memory)");
@@ -73,6 +79,7 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
   g.subdomains = o.subdomains;
   g.threads = o.threads;
   g.max_triangles = o.max_triangles;
+  g.gradation = o.gradation;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
 }

@@ -23,6 +23,7 @@
 #include <pdd/io/svg.hpp>
 #include <pdd/io/write_mesh.hpp>
 #include <pdd/kernels/native/mesher.hpp>
+#include <pdd/madd/gradation_options.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
@@ -268,6 +269,16 @@ void add_sizing_stats(const mesh_run& r, nlohmann::json& j) {
   if (!r.gs.graded_path) j["graded_fallback"] = r.gs.graded_fallback;
   j["k_ratio_max"] = r.gs.k_ratio_max;
   j["subdomain_k"] = r.gs.subdomain_k;
+  j["lowered_k"] = r.gs.lowered_k; // subdomains whose k_i relation 7.1 lowered
+  if (!r.gs.gradation_controlled) return;
+  // Algorithm 7.1: measured on the decomposition (conditions left unmet by its termination
+  // rule, and whether its most-subdomains cap stopped it)
+  j["r1_max"] = r.gs.r1_max;
+  j["r2_max"] = r.gs.r2_max;
+  j["gradation_splits"] = r.gs.decomposition.splits;
+  j["condition_1_unmet"] = r.gs.condition_1_unmet;
+  j["condition_2_unmet"] = r.gs.condition_2_unmet;
+  j["gradation_capped"] = r.gs.gradation_capped;
 }
 
 /// The verification, comparison, decomposition and timing part of the --stats JSON.
@@ -276,6 +287,7 @@ void add_run_stats(const mesh_run& r, nlohmann::json& j) {
   j["delaunay_violations"] = r.report ? nlohmann::json(r.report->delaunay_violations) : nullptr;
   j["conforming"] = r.report ? nlohmann::json(r.report->ok()) : nullptr;
   if (r.monolithic_triangles) {
+    j["monolithic_triangles"] = *r.monolithic_triangles;
     j["monolithic_triangles"] = *r.monolithic_triangles;
     j["over_refinement_pct"] =
         100.0 *

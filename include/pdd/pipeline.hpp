@@ -23,6 +23,7 @@
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
+#include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
@@ -92,6 +93,10 @@ public:
         options_.subdomains != 0 ? options_.subdomains
         : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads, options_)
                   : 1;
+    // the graded method (Algorithm 7.1 + graded path) where no shields are needed (input
+    // angles >= 60 deg, Ruppert's condition) and k is neither scaled nor overridden
+    graded_plan_ = options_.sizing && stats_.subdomains > 1 && !(options_.k_override > 0.0) &&
+                   options_.k_scale == 1.0 && min_domain_angle_deg(domain_) >= 60.0;
   }
 
   /// N, the number of subdomains this pipeline uses.
@@ -130,7 +135,10 @@ public:
       mo.subdomains = stats_.subdomains;
       mo.max_subdomain_area = std::numeric_limits<double>::infinity();
       mo.threads = options_.threads;
-      decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
+      if (graded_plan_)
+        decompose_graded(mo);
+      else
+        decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
       stats_.subdomains = decomposition_.subdomains.size();
     }
     stats_.timings.decompose = seconds_since(t0);
@@ -192,7 +200,8 @@ public:
       timed.finish();
     } else {
       meshing_statistics ms = mesh_subdomains(
-          decoupled_decomposition_, {options_.criteria, options_.max_repairs, options_.sizing},
+          decoupled_decomposition_,
+          {options_.criteria, options_.max_repairs, options_.sizing, gradation_.expected_triangles},
           mesher_, executor_, timed);
       stats_.triangles = ms.triangles();
       stats_.interface_splits = ms.interface_splits;
@@ -247,6 +256,25 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
+  /// Stage 1 of the graded method: Algorithm 7.1 (see generate_options::gradation) into
+  /// decomposition_, with its measurements in gradation_ and the statistics.
+  void decompose_graded(const madd_options& mo) {
+    gradation_options go = options_.gradation;
+    go.max_area = options_.criteria.max_area;
+    go.mean_area_fraction = mean_triangle_area_fraction;
+    if (options_.subdomains == 0) go.max_subdomain_triangles = options_.target_subdomain_triangles;
+    go.min_subdomains = stats_.subdomains;
+    go.max_subdomains = std::max(go.max_subdomains, go.min_subdomains);
+    decomposition_ = gradation_controlled_decompose(domain_, options_.sizing, go, mo, partitioner_,
+                                                    &gradation_, &stats_.decomposition);
+    stats_.gradation_controlled = true;
+    stats_.r1_max = gradation_.r1_max;
+    stats_.r2_max = gradation_.r2_max;
+    stats_.condition_1_unmet = gradation_.condition_1_unmet;
+    stats_.condition_2_unmet = gradation_.condition_2_unmet;
+    stats_.gradation_capped = gradation_.capped;
+  }
+
   /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i through
   /// pdd::shield_length_cap, see pdd::shield_decomposition).
   double unshielded_k() const {
@@ -265,9 +293,9 @@ private:
                                                    shortest, decoupling_criteria());
   }
 
-  /// Builds the graded path into decoupled_decomposition_; false (with the reason in the
-  /// statistics) when relation 7.1 fails, shields are needed, or k is overridden or
-  /// scaled.
+  /// Builds the graded path into decoupled_decomposition_ (k_i lowered where relation 7.1
+  /// needs it); false (with the reason in the statistics) when shields are needed, or k is
+  /// overridden or scaled.
   bool try_graded_path(bool no_shields) {
     if (!no_shields) {
       stats_.graded_fallback = "small input angles are shielded (the graded path has no shields)";
@@ -277,19 +305,19 @@ private:
       stats_.graded_fallback = "k_override or k_scale set";
       return false;
     }
-    const std::vector<double> lo =
-        detail::subdomain_sizing_minima(decomposition_, options_.sizing, executor_);
-    try {
-      graded_decoupling g = decouple_graded(decomposition_, options_.criteria, lo, executor_);
-      decoupled_decomposition_ = std::move(g.path);
-      stats_.subdomain_k = std::move(g.subdomain_k);
-      stats_.k_ratio_max = g.k_ratio_max;
-      stats_.graded_path = true;
-      return true;
-    } catch (const decoupling_error& e) {
-      stats_.graded_fallback = e.what();
-      return false;
-    }
+    std::vector<double> lo;
+    if (gradation_.bounds.size() == decomposition_.subdomains.size())
+      for (const sizing_bounds& b : gradation_.bounds)
+        lo.push_back(b.lo);
+    else
+      lo = detail::subdomain_sizing_minima(decomposition_, options_.sizing, executor_);
+    graded_decoupling g = decouple_graded(decomposition_, options_.criteria, lo, executor_);
+    decoupled_decomposition_ = std::move(g.path);
+    stats_.subdomain_k = std::move(g.subdomain_k);
+    stats_.k_ratio_max = g.k_ratio_max;
+    stats_.lowered_k = g.lowered_k;
+    stats_.graded_path = true;
+    return true;
   }
 
   /// The criteria the decoupling path and the shields are built for: max_area lowered to the
@@ -310,6 +338,11 @@ private:
     stats_.split_points = 0;
     stats_.shielded_triangles = 0;
     stats_.decomposition = {};
+    stats_.lowered_k = 0;
+    stats_.gradation_controlled = stats_.gradation_capped = false;
+    stats_.r1_max = stats_.r2_max = 0.0;
+    stats_.condition_1_unmet = stats_.condition_2_unmet = 0;
+    gradation_ = {};
     decomposition_ = {};
     decoupled_decomposition_ = {};
   }
@@ -324,6 +357,9 @@ private:
   /// Lower bound of the sizing field over the domain (infinity without a field).
   double sizing_min_ = std::numeric_limits<double>::infinity();
   bool decomposed_ = false, decoupled_ = false;
+  /// The graded method's decomposition (Algorithm 7.1) is used (see the constructor).
+  bool graded_plan_ = false;
+  gradation_report gradation_;
   decomposition decomposition_;
   decoupled_decomposition decoupled_decomposition_;
   generate_statistics stats_;

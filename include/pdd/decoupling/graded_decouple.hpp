@@ -17,7 +17,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <queue>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace pdd {
@@ -30,7 +32,65 @@ struct graded_decoupling {
   std::vector<double> subdomain_k;
   /// max over interfaces of k_j / k_i (k_i <= k_j); relation 7.1 needs it below sqrt 3.
   double k_ratio_max = 1.0;
+  /// Subdomains whose k_i was lowered so that relation 7.1 holds (graded_decoupling_options::
+  /// lower_k).
+  std::size_t lowered_k = 0;
 };
+
+/// Options of pdd::decouple_graded.
+struct graded_decoupling_options {
+  /// Where relation 7.1 fails on a separator segment E between D_i and D_j (k_i <= k_j),
+  /// true: lower k_j to sqrt 3 |E| / (2 nu), nu the piece count of E for k_i, so that the
+  /// pieces meet Proposition 20 on both sides, and propagate (see pdd::decouple_graded);
+  /// false: throw pdd::decoupling_error.
+  bool lower_k = true;
+};
+
+namespace detail {
+/// The largest k_j that relation 7.1 allows beside k_i on a segment of length `length`:
+/// sqrt 3 |E| / (2 nu(k_i)), nu(k_i) = interface_split_count (shrunk by a relative 1e-13
+/// so that the check |E| / nu >= 2 k_j / sqrt 3 holds in floating point). Nondecreasing in k_i,
+/// and > k_i when k_i <= |E| / 4 (nu >= 3 pieces of length >= 4 k_i / 3 > 2 k_i / sqrt 3).
+inline double largest_k_beside(double length, double k_i) {
+  const double nu = static_cast<double>(interface_split_count(length, k_i));
+  return (length / nu) * (std::numbers::sqrt3 / 2.0) * (1.0 - 1e-13);
+}
+
+/// Lowers k (in place) to the largest values <= k with k_j <= largest_k_beside(|E|, k_i) on
+/// every segment E between D_i and D_j with k_i <= k_j: Dijkstra's order (smallest k first;
+/// a popped k is final since largest_k_beside(|E|, x) > x and is nondecreasing in x).
+/// Returns the number of subdomains lowered. Complexity O((m + |path|) log m).
+inline std::size_t lower_k_for_relation_7_1(const std::vector<path_edge>& path,
+                                            std::vector<double>& k) {
+  std::vector<std::vector<std::pair<index_t, double>>> adj(k.size());
+  for (const path_edge& e : path) {
+    adj[e.sides[0]].emplace_back(e.sides[1], e.length);
+    adj[e.sides[1]].emplace_back(e.sides[0], e.length);
+  }
+  const std::vector<double> initial = k;
+  using item = std::pair<double, index_t>;
+  std::priority_queue<item, std::vector<item>, std::greater<>> heap;
+  for (index_t s = 0; s < k.size(); ++s)
+    heap.emplace(k[s], s);
+  while (!heap.empty()) {
+    const auto [ks, s] = heap.top();
+    heap.pop();
+    if (ks != k[s]) continue;
+    for (const auto& [t, length] : adj[s]) {
+      if (!(k[t] > ks)) continue;
+      const double allowed = largest_k_beside(length, ks);
+      if (k[t] > allowed) {
+        k[t] = allowed;
+        heap.emplace(allowed, t);
+      }
+    }
+  }
+  std::size_t lowered = 0;
+  for (std::size_t s = 0; s < k.size(); ++s)
+    lowered += k[s] < initial[s] ? 1 : 0;
+  return lowered;
+}
+} // namespace detail
 
 /// Refines the separators of d into a graded decoupling path: every separator segment E
 /// between D_i and D_j (k_i <= k_j) is split into the smallest nu with |E| / nu < 2 k_i
@@ -38,6 +98,13 @@ struct graded_decoupling {
 /// with |E| / (2 k_i) < nu <= sqrt 3 |E| / (2 k_j) exists (Theorem 22). The pieces then meet
 /// Proposition 20 on both sides, so Ruppert-type refinement of each subdomain with area
 /// bounds >= m(D_i) never splits them (Proposition 21).
+/// Where relation 7.1 fails (k_j / k_i too large: a decomposition that does not meet
+/// Condition 2, or k held down by lfs_min or a short separator on one side), o.lower_k lowers
+/// k_j to the largest value the relation allows, propagated through the neighbours (smallest
+/// k first). That is safe: k_i enters Proposition 20 only as a lower bound (Theorem 19: A is
+/// any constant below the area bound, and k <= lfs_min, L/4 still hold for a smaller k), so
+/// the kernel still meshes D_j with the field itself; the cost is shorter pieces on D_j's
+/// separators (graded_decoupling::lowered_k counts the subdomains).
 /// \param area_lower_bound per subdomain, a TRUE lower bound m(D_i) of the area bound over it
 /// (pdd::sizing_range; infinity: unbounded), already combined with criteria.max_area.
 /// \throws pdd::decoupling_error naming the interface (subdomains, k_i, k_j, length) where
@@ -46,7 +113,7 @@ struct graded_decoupling {
 template <Executor E = sequential_executor>
 graded_decoupling decouple_graded(decomposition d, const mesh_criteria& criteria,
                                   const std::vector<double>& area_lower_bound,
-                                  const E& executor = {}) {
+                                  const E& executor = {}, const graded_decoupling_options& o = {}) {
   detail::check_decomposition(d);
   const std::size_t m = d.subdomains.size();
   if (area_lower_bound.size() != m)
@@ -66,6 +133,7 @@ graded_decoupling decouple_graded(decomposition d, const mesh_criteria& criteria
     c.max_area = std::min(criteria.max_area, area_lower_bound[s]);
     g.subdomain_k[s] = decoupling_parameter(lfs[s], shortest[s], c);
   }
+  if (o.lower_k) g.lowered_k = detail::lower_k_for_relation_7_1(dd.path, g.subdomain_k);
   dd.lfs_min = *std::min_element(lfs.begin(), lfs.end());
   dd.shortest_separator = *std::min_element(shortest.begin(), shortest.end());
   dd.k = *std::min_element(g.subdomain_k.begin(), g.subdomain_k.end());

@@ -35,6 +35,10 @@ struct meshing_options {
   /// must have been built for it: k from its minimum (pdd::decouple on lowered criteria) or
   /// k_i from its minimum over each subdomain (pdd::decouple_graded); see pdd::pipeline.
   any_sizing sizing{};
+  /// Expected work per subdomain, the order in which the executors start them (largest
+  /// first; Algorithm 7.2: the expected triangles of each subdomain, e.g.
+  /// gradation_report::expected_triangles). Empty: area / criteria.max_area (pdd::expected_work).
+  std::vector<double> expected_work{};
 };
 
 /// What pdd::mesh_subdomain made of one subdomain.
@@ -107,6 +111,20 @@ inline std::vector<double> expected_work(const decoupled_decomposition& dd,
   for (index_t s = 0; s < work.size(); ++s)
     work[s] = detail::subdomain_area(dd.parts, s) / (bounded ? criteria.max_area : 1.0);
   return work;
+}
+
+/// The expected work of meshing each subdomain under `options`: options.expected_work when
+/// given, else expected_work(dd, options.criteria).
+/// \throws pdd::meshing_error(-1, ...) when options.expected_work has not one value per
+/// subdomain.
+inline std::vector<double> expected_work(const decoupled_decomposition& dd,
+                                         const meshing_options& options) {
+  if (options.expected_work.empty()) return expected_work(dd, options.criteria);
+  if (options.expected_work.size() != dd.num_subdomains())
+    throw meshing_error(-1, "meshing_options::expected_work has " +
+                                std::to_string(options.expected_work.size()) + " values for " +
+                                std::to_string(dd.num_subdomains()) + " subdomains");
+  return options.expected_work;
 }
 
 /// One invariance repair round (pdd::mesh_subdomains): re-splits every path edge in

@@ -140,7 +140,7 @@ distributed_meshing_statistics mesh_subdomains(MPI_Comm comm, decoupled_decompos
   int size = 0;
   detail::check(MPI_Comm_size(own.get(), &size), "MPI_Comm_size");
   const std::size_t n = dd.num_subdomains();
-  const std::vector<double> work = expected_work(dd, options.criteria);
+  const std::vector<double> work = expected_work(dd, options);
   distributed_meshing_statistics stats;
   stats.meshing.subdomains.resize(n);
   for (index_t s = 0; s < n; ++s)

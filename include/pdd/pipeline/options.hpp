@@ -4,6 +4,7 @@
 
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 
@@ -18,14 +19,22 @@ struct generate_options {
   mesh_criteria criteria;
   /// A sizing field besides criteria.max_area: the area bound at p is
   /// min(criteria.max_area, sizing.area_at(p)). Empty (default): criteria.max_area alone.
-  /// With N > 1 the graded decoupling path (pdd::decouple_graded: k_i per subdomain from
-  /// m(D_i) = sizing_range over its bounding box, Theorem 22) is used when relation 7.1
-  /// holds on every separator and no shields, k_scale or k_override are in play; otherwise
-  /// (until Algorithm 7.1 decomposes further) the interim rule: the uniform path built for
-  /// the field's minimum over the domain's bounding box, so every interface piece is shorter
-  /// than 2k for every subdomain (generate_statistics::graded_fallback says why). The kernel
-  /// meshes each subdomain with the field itself either way.
+  /// With N > 1 the graded method of dissertation ch. 7: the gradation-controlled
+  /// decomposition (pdd::gradation_controlled_decompose, Algorithm 7.1 with `gradation`) and
+  /// the graded decoupling path (pdd::decouple_graded: k_i per subdomain from m(D_i), lowered
+  /// where relation 7.1 needs it, Theorem 22); the subdomains are meshed largest expected
+  /// work first (Algorithm 7.2). Where input angles below 60 degrees need shields, or k_scale
+  /// or k_override are set, N-way MADD and the interim uniform path are used instead: k from
+  /// the field's minimum over the domain's bounding box (generate_statistics::graded_fallback
+  /// says why). The kernel meshes each subdomain with the field itself either way.
   any_sizing sizing{};
+  /// Algorithm 7.1's options for the graded method (R1, R2, the termination minimum and the
+  /// most subdomains). The pipeline sets the rest: automatic N (subdomains == 0): T =
+  /// target_subdomain_triangles (Condition 3) and at least the automatic plan's N subdomains;
+  /// a requested N: at least N subdomains (largest expected work first) and no Condition 3;
+  /// max_area = criteria.max_area. Leave max_subdomain_triangles, min_subdomains and max_area
+  /// at their defaults (check_generate_options).
+  gradation_options gradation{};
   /// N, the number of subdomains. 0: automatic (pdd::automatic_subdomains); 1: the kernel
   /// meshes the whole domain at once (no decomposition).
   std::size_t subdomains = 0;
@@ -86,6 +95,15 @@ inline void check_generate_options(const generate_options& o) {
   if (o.madd.max_subdomain_area != defaults.max_subdomain_area)
     bad("madd.max_subdomain_area is not used by the pipeline (it plans the number of "
         "subdomains itself; set subdomains instead)");
+  const gradation_options gdefaults;
+  if (o.gradation.max_subdomain_triangles != gdefaults.max_subdomain_triangles ||
+      o.gradation.min_subdomains != gdefaults.min_subdomains ||
+      o.gradation.max_area != gdefaults.max_area ||
+      o.gradation.mean_area_fraction != gdefaults.mean_area_fraction)
+    bad("gradation.max_subdomain_triangles, min_subdomains, max_area and mean_area_fraction are "
+        "set by the pipeline (target_subdomain_triangles, subdomains, criteria.max_area); leave "
+        "them at their defaults");
+  check_gradation_options(o.gradation);
   const double phi0 = o.madd.min_separator_angle_deg;
   if (!(phi0 >= 60.0 && phi0 < 90.0))
     bad("madd.min_separator_angle_deg is " + std::to_string(phi0) +

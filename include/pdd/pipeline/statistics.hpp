@@ -53,6 +53,19 @@ struct generate_statistics {
   std::string graded_fallback;
   std::vector<double> subdomain_k; ///< k_i per subdomain (graded path)
   double k_ratio_max = 0.0;        ///< max k_j / k_i across interfaces (graded path)
+  /// With a sizing field and N > 1 when no shields, k_scale or k_override are in play: the
+  /// decomposition is Algorithm 7.1's (gradation_controlled_decompose) and these are measured
+  /// on it: max M / m over subdomains (Condition 1), max m_i / m_j over separators
+  /// (Condition 2), the subdomains / neighbour pairs left non-acceptable by the termination
+  /// rule (gradation_options::min_subdomain_triangles), and whether max_subdomains stopped it.
+  bool gradation_controlled = false;
+  double r1_max = 0.0;
+  double r2_max = 0.0;
+  std::size_t condition_1_unmet = 0;
+  std::size_t condition_2_unmet = 0;
+  bool gradation_capped = false;
+  /// Subdomains whose k_i the graded path lowered so that relation 7.1 holds.
+  std::size_t lowered_k = 0;
 };
 
 } // namespace pdd

@@ -28,7 +28,7 @@ template <DelaunayMesher M, MeshSink S>
 class meshing_run {
 public:
   meshing_run(decoupled_decomposition& dd, const meshing_options& options, const M& mesher, S& sink)
-      : work(expected_work(dd, options.criteria)), dd_(dd), options_(options), mesher_(mesher),
+      : work(expected_work(dd, options)), dd_(dd), options_(options), mesher_(mesher),
         sink_(sink) {
     stats.subdomains.resize(work.size());
     for (index_t s = 0; s < work.size(); ++s)
