@@ -111,6 +111,7 @@
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
+#include <pdd/mesh/verification_report.hpp>
 #include <pdd/mesh/verify.hpp>
 
 // level 8: pipeline
