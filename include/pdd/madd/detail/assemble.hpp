@@ -4,11 +4,11 @@
 /// deterministic vertex ids, subdomain order and interfaces.
 #pragma once
 
-#include <pdd/madd/detail/region.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/core/pslg.hpp>
 #include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/detail/region.hpp>
 
 #include <algorithm>
 #include <cstdint>
@@ -52,11 +52,17 @@ inline std::vector<madd_region> regions_of(const pslg& g) {
   return out;
 }
 
-/// Inserts every registered split vertex into every region edge it lies on, so that both
-/// sides of an interface have the same vertices. Complexity O(E log K) for E region edges and
-/// K registered vertices.
-inline void apply_edge_splits(std::vector<madd_region>& regions, std::vector<madd_edge_split> reg) {
-  if (reg.empty()) return;
+/// One point of a registered edge's split group: the edge's ends (whose markers are not ours
+/// to set) or a split vertex with its marker.
+struct split_group_point {
+  point p;
+  int marker;
+  bool end; ///< lo or hi of the registered edge
+};
+
+/// The registered edge splits grouped by edge: the points of each edge in order of their
+/// parameter, ends included. Duplicate registrations are dropped.
+inline std::vector<std::vector<split_group_point>> split_groups(std::vector<madd_edge_split> reg) {
   std::sort(reg.begin(), reg.end(), [](const madd_edge_split& a, const madd_edge_split& b) {
     return std::tie(a.lo, a.hi, a.t) < std::tie(b.lo, b.hi, b.t);
   });
@@ -65,15 +71,9 @@ inline void apply_edge_splits(std::vector<madd_region>& regions, std::vector<mad
                           return a.lo == b.lo && a.hi == b.hi && a.t == b.t;
                         }),
             reg.end());
-  // Groups: the points of each registered edge in order, ends included.
-  struct gpoint {
-    point p;
-    int marker;
-    bool end; // lo or hi: its marker is not ours to set
-  };
-  std::vector<std::vector<gpoint>> groups;
+  std::vector<std::vector<split_group_point>> groups;
   for (std::size_t i = 0; i < reg.size();) {
-    std::vector<gpoint> gp{{reg[i].lo, 0, true}};
+    std::vector<split_group_point> gp{{reg[i].lo, 0, true}};
     std::size_t k = i;
     for (; k < reg.size() && reg[k].lo == reg[i].lo && reg[k].hi == reg[i].hi; ++k)
       gp.push_back({reg[k].m, reg[k].marker, false});
@@ -81,65 +81,99 @@ inline void apply_edge_splits(std::vector<madd_region>& regions, std::vector<mad
     groups.push_back(std::move(gp));
     i = k;
   }
+  return groups;
+}
+
+/// Lookup of a region edge among the split groups: every pair (i, j), j >= i + 2, of points
+/// of a group is an edge that the points strictly between them subdivide.
+class split_edge_index {
+public:
+  /// A group's sub-edge from its point i to its point j (canonical ends a < b).
   struct entry {
-    point a, b; // canonical
+    point a, b;
     std::uint32_t group, i, j;
   };
-  std::vector<entry> entries;
-  for (std::uint32_t gi = 0; gi < groups.size(); ++gi) {
-    const auto& gp = groups[gi];
-    for (std::uint32_t i = 0; i < gp.size(); ++i)
-      for (std::uint32_t j = i + 2; j < gp.size(); ++j)
-        entries.push_back({std::min(gp[i].p, gp[j].p), std::max(gp[i].p, gp[j].p), gi, i, j});
+
+  explicit split_edge_index(const std::vector<std::vector<split_group_point>>& groups) {
+    for (std::uint32_t gi = 0; gi < groups.size(); ++gi) {
+      const auto& gp = groups[gi];
+      for (std::uint32_t i = 0; i < gp.size(); ++i)
+        for (std::uint32_t j = i + 2; j < gp.size(); ++j)
+          entries_.push_back({std::min(gp[i].p, gp[j].p), std::max(gp[i].p, gp[j].p), gi, i, j});
+    }
+    std::sort(entries_.begin(), entries_.end(), [](const entry& x, const entry& y) {
+      return std::tie(x.a, x.b) < std::tie(y.a, y.b);
+    });
   }
-  std::sort(entries.begin(), entries.end(),
-            [](const entry& x, const entry& y) { return std::tie(x.a, x.b) < std::tie(y.a, y.b); });
-  auto find = [&](point x, point y) -> const entry* {
+
+  /// The entry of the edge xy (either orientation), nullptr if no split lies on it.
+  const entry* find(point x, point y) const {
     const point a = std::min(x, y), b = std::max(x, y);
-    auto it = std::lower_bound(entries.begin(), entries.end(), std::make_pair(a, b),
+    auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(a, b),
                                [](const entry& e, const std::pair<point, point>& k) {
                                  return std::tie(e.a, e.b) < std::tie(k.first, k.second);
                                });
-    if (it == entries.end() || it->a != a || it->b != b) return nullptr;
+    if (it == entries_.end() || it->a != a || it->b != b) return nullptr;
     return &*it;
-  };
+  }
+
+private:
+  std::vector<entry> entries_;
+};
+
+/// Inserts the split vertices lying on the edges of l; false (l unchanged) if there are none.
+inline bool insert_splits_into_loop(madd_loop& l,
+                                    const std::vector<std::vector<split_group_point>>& groups,
+                                    const split_edge_index& index) {
+  const std::size_t n = l.size();
+  bool any = false;
+  for (std::size_t i = 0; i < n && !any; ++i)
+    any = index.find(l.points[i], l.points[(i + 1) % n]) != nullptr;
+  if (!any) return false;
+  madd_loop out;
+  for (std::size_t i = 0; i < n; ++i) {
+    out.points.push_back(l.points[i]);
+    out.markers.push_back(l.markers[i]);
+    out.tags.push_back(l.tags[i]);
+    const split_edge_index::entry* e = index.find(l.points[i], l.points[(i + 1) % n]);
+    if (e == nullptr) continue;
+    const auto& gp = groups[e->group];
+    const bool forward = gp[e->i].p == l.points[i];
+    for (std::uint32_t k = 1; k + 1 < e->j - e->i + 1; ++k) {
+      const split_group_point& q = gp[forward ? e->i + k : e->j - k];
+      out.points.push_back(q.p);
+      out.markers.push_back(q.marker);
+      out.tags.push_back(l.tags[i]);
+    }
+  }
+  l = std::move(out);
+  return true;
+}
+
+/// Inserts every registered split vertex into every region edge it lies on, so that both
+/// sides of an interface have the same vertices. Complexity O(E log K) for E region edges and
+/// K registered vertices.
+inline void apply_edge_splits(std::vector<madd_region>& regions, std::vector<madd_edge_split> reg) {
+  if (reg.empty()) return;
+  const std::vector<std::vector<split_group_point>> groups = split_groups(std::move(reg));
+  const split_edge_index index(groups);
   for (madd_region& r : regions) {
     bool changed = false;
-    for (madd_loop& l : r.loops) {
-      const std::size_t n = l.size();
-      bool any = false;
-      for (std::size_t i = 0; i < n && !any; ++i)
-        any = find(l.points[i], l.points[(i + 1) % n]) != nullptr;
-      if (!any) continue;
-      madd_loop out;
-      for (std::size_t i = 0; i < n; ++i) {
-        out.points.push_back(l.points[i]);
-        out.markers.push_back(l.markers[i]);
-        out.tags.push_back(l.tags[i]);
-        const entry* e = find(l.points[i], l.points[(i + 1) % n]);
-        if (e == nullptr) continue;
-        const auto& gp = groups[e->group];
-        const bool forward = gp[e->i].p == l.points[i];
-        for (std::uint32_t k = 1; k + 1 < e->j - e->i + 1; ++k) {
-          const gpoint& q = gp[forward ? e->i + k : e->j - k];
-          out.points.push_back(q.p);
-          out.markers.push_back(q.marker);
-          out.tags.push_back(l.tags[i]);
-        }
-      }
-      l = std::move(out);
-      changed = true;
-    }
+    for (madd_loop& l : r.loops)
+      changed = insert_splits_into_loop(l, groups, index) || changed;
     if (changed) r.area = region_area(r);
   }
 }
 
-/// The decomposition value of the final regions: vertex ids in lexicographic order of the
-/// coordinates, every loop starting at its smallest id, holes ordered by their first id,
-/// subdomains ordered by their outer loops, interfaces found from the shared edges.
-/// \throws internal_error if an interface edge is not shared by exactly two regions.
-inline decomposition assemble_decomposition(const std::vector<madd_region>& regions) {
-  decomposition d;
+/// A region loop by vertex ids, with its edge tags (tag i: edge v[i] -> v[i + 1]).
+struct id_loop {
+  std::vector<index_t> v;
+  std::vector<madd_edge_tag> t;
+};
+
+/// The distinct points of all region loops in lexicographic order, with their markers, as
+/// the vertices of d.
+inline void number_vertices(const std::vector<madd_region>& regions, decomposition& d) {
   std::vector<std::pair<point, int>> pts;
   for (const madd_region& r : regions)
     for (const madd_loop& l : r.loops)
@@ -153,20 +187,22 @@ inline decomposition assemble_decomposition(const std::vector<madd_region>& regi
     d.vertices.push_back(p);
     d.vertex_markers.push_back(m);
   }
+}
+
+/// The regions' loops by the vertex ids of d (sorted vertices): each loop starts at its
+/// smallest id, holes are ordered by their first id, regions by their outer loops.
+inline std::vector<std::vector<id_loop>> numbered_loops(const std::vector<madd_region>& regions,
+                                                        const decomposition& d) {
   auto id_of = [&](point p) {
     const auto it = std::lower_bound(d.vertices.begin(), d.vertices.end(), p);
     PDD_ASSERT(it != d.vertices.end() && *it == p);
     return static_cast<index_t>(it - d.vertices.begin());
   };
-  struct tagged_loop {
-    std::vector<index_t> v;
-    std::vector<madd_edge_tag> t;
-  };
-  std::vector<std::vector<tagged_loop>> subs;
+  std::vector<std::vector<id_loop>> subs;
   for (const madd_region& r : regions) {
-    std::vector<tagged_loop> loops;
+    std::vector<id_loop> loops;
     for (const madd_loop& l : r.loops) {
-      tagged_loop tl;
+      id_loop tl;
       for (std::size_t i = 0; i < l.size(); ++i) {
         tl.v.push_back(id_of(l.points[i]));
         tl.t.push_back(l.tags[i]);
@@ -178,15 +214,24 @@ inline decomposition assemble_decomposition(const std::vector<madd_region>& regi
       loops.push_back(std::move(tl));
     }
     std::sort(loops.begin() + 1, loops.end(),
-              [](const tagged_loop& a, const tagged_loop& b) { return a.v[0] < b.v[0]; });
+              [](const id_loop& a, const id_loop& b) { return a.v[0] < b.v[0]; });
     subs.push_back(std::move(loops));
   }
   std::sort(subs.begin(), subs.end(), [](const auto& a, const auto& b) { return a[0].v < b[0].v; });
-  // Interface edges: (min id, max id, subdomain, loop, edge).
-  struct iedge {
-    index_t u, w, s, l, i;
+  return subs;
+}
+
+/// An undirected edge by its vertex ids (smaller first), or a pair of subdomains.
+using index_pair = std::pair<index_t, index_t>;
+
+/// Per pair of subdomains (smaller index first): the interface edges they share.
+/// \throws internal_error if an interface edge is not shared by exactly two subdomains.
+inline std::map<index_pair, std::vector<index_pair>>
+shared_interface_edges(const std::vector<std::vector<id_loop>>& subs) {
+  struct interface_edge {
+    index_t u, w, s, l, i; // min id, max id, subdomain, loop, edge
   };
-  std::vector<iedge> ie;
+  std::vector<interface_edge> ie;
   for (index_t s = 0; s < subs.size(); ++s)
     for (index_t l = 0; l < subs[s].size(); ++l) {
       const auto& tl = subs[s][l];
@@ -196,95 +241,121 @@ inline decomposition assemble_decomposition(const std::vector<madd_region>& regi
         ie.push_back({std::min(a, b), std::max(a, b), s, l, i});
       }
     }
-  std::sort(ie.begin(), ie.end(), [](const iedge& x, const iedge& y) {
+  std::sort(ie.begin(), ie.end(), [](const interface_edge& x, const interface_edge& y) {
     return std::tie(x.u, x.w, x.s) < std::tie(y.u, y.w, y.s);
   });
   if (ie.size() % 2 != 0) throw internal_error("MADD: an interface edge has no neighbour");
-  // Per subdomain pair: the shared edges (as vertex pairs).
-  std::map<std::pair<index_t, index_t>, std::vector<std::pair<index_t, index_t>>> pair_edges;
+  std::map<index_pair, std::vector<index_pair>> pair_edges;
   for (std::size_t k = 0; k < ie.size(); k += 2) {
-    const iedge& x = ie[k];
-    const iedge& y = ie[k + 1];
+    const interface_edge& x = ie[k];
+    const interface_edge& y = ie[k + 1];
     if (x.u != y.u || x.w != y.w || x.s == y.s ||
         (k + 2 < ie.size() && ie[k + 2].u == x.u && ie[k + 2].w == x.w))
       throw internal_error("MADD: interface edge (" + std::to_string(x.u) + ", " +
                            std::to_string(x.w) + ") is not shared by exactly two subdomains");
     pair_edges[{x.s, y.s}].emplace_back(x.u, x.w);
   }
-  // Chain each pair's edges into polylines from their smaller end.
-  std::map<std::pair<index_t, index_t>, index_t> edge_interface;
-  for (const auto& [sides, edges] : pair_edges) {
-    const std::pair<index_t, index_t> st = sides; // Clang < 16: no capture of a binding
-    std::map<index_t, std::vector<index_t>> adj;
-    for (const auto& [a, b] : edges) {
-      adj[a].push_back(b);
-      adj[b].push_back(a);
-    }
-    std::map<std::pair<index_t, index_t>, char> used;
-    auto walk = [&](index_t start) {
-      interface_curve c;
-      c.a = st.first;
-      c.b = st.second;
-      c.vertices.push_back(start);
-      index_t v = start;
-      for (;;) {
-        index_t nxt = no_index;
-        for (const index_t w : adj[v]) {
-          const auto key = std::make_pair(std::min(v, w), std::max(v, w));
-          if (!used[key]) {
-            if (nxt == no_index || w < nxt) nxt = w;
-          }
-        }
-        if (nxt == no_index) break;
-        used[{std::min(v, nxt), std::max(v, nxt)}] = 1;
-        c.vertices.push_back(nxt);
-        v = nxt;
-      }
-      const auto id = static_cast<index_t>(d.interfaces.size());
-      for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
-        edge_interface[{std::min(c.vertices[k], c.vertices[k + 1]),
-                        std::max(c.vertices[k], c.vertices[k + 1])}] = id;
-      d.interfaces.push_back(std::move(c));
-    };
-    for (const auto& [v, nb] : adj)
-      if (nb.size() == 1 && !used[{std::min(v, nb[0]), std::max(v, nb[0])}]) walk(v);
-    for (const auto& [v, nb] : adj)
-      for (const index_t w : nb)
-        if (!used[{std::min(v, w), std::max(v, w)}]) walk(v); // closed chains
+  return pair_edges;
+}
+
+/// Chains the edges shared by the subdomains sides.first and sides.second into interface
+/// curves of d: open chains from their smaller end first, then closed chains, each walked
+/// to its smallest unused neighbour. Records each edge's interface id in edge_interface.
+inline void chain_interface_edges(index_pair sides, const std::vector<index_pair>& edges,
+                                  decomposition& d, std::map<index_pair, index_t>& edge_interface) {
+  std::map<index_t, std::vector<index_t>> adj;
+  for (const auto& [a, b] : edges) {
+    adj[a].push_back(b);
+    adj[b].push_back(a);
   }
-  for (index_t s = 0; s < subs.size(); ++s) {
-    subdomain sd;
-    for (const auto& tl : subs[s]) {
-      std::vector<edge_tag> tags;
-      for (index_t i = 0; i < tl.v.size(); ++i) {
-        const madd_edge_tag& t = tl.t[i];
-        edge_tag et;
-        if (t.external) {
-          et.type = edge_tag::kind::external;
-          et.id = t.segment;
-          et.marker = t.marker;
-        } else {
-          const index_t a = tl.v[i], b = tl.v[(i + 1) % tl.v.size()];
-          et.type = edge_tag::kind::interface;
-          et.id = edge_interface.at({std::min(a, b), std::max(a, b)});
-          const interface_curve& c = d.interfaces[et.id];
-          et.neighbour = c.a == s ? c.b : c.a;
-        }
-        tags.push_back(et);
-      }
-      sd.loops.push_back(tl.v);
-      sd.tags.push_back(std::move(tags));
+  std::map<index_pair, char> used;
+  auto walk = [&](index_t start) {
+    interface_curve c;
+    c.a = sides.first;
+    c.b = sides.second;
+    c.vertices.push_back(start);
+    index_t v = start;
+    for (;;) {
+      index_t nxt = no_index;
+      for (const index_t w : adj[v])
+        if (!used[{std::min(v, w), std::max(v, w)}] && (nxt == no_index || w < nxt)) nxt = w;
+      if (nxt == no_index) break;
+      used[{std::min(v, nxt), std::max(v, nxt)}] = 1;
+      c.vertices.push_back(nxt);
+      v = nxt;
     }
-    double area = 0.0;
-    for (const auto& l : sd.loops) {
-      std::vector<point> p;
-      for (const index_t v : l)
-        p.push_back(d.vertices[v]);
-      area += signed_area(p);
+    const auto id = static_cast<index_t>(d.interfaces.size());
+    for (std::size_t k = 0; k + 1 < c.vertices.size(); ++k)
+      edge_interface[{std::min(c.vertices[k], c.vertices[k + 1]),
+                      std::max(c.vertices[k], c.vertices[k + 1])}] = id;
+    d.interfaces.push_back(std::move(c));
+  };
+  for (const auto& [v, nb] : adj)
+    if (nb.size() == 1 && !used[{std::min(v, nb[0]), std::max(v, nb[0])}]) walk(v);
+  for (const auto& [v, nb] : adj)
+    for (const index_t w : nb)
+      if (!used[{std::min(v, w), std::max(v, w)}]) walk(v); // closed chains
+}
+
+/// The edge tags of subdomain s's loop tl: external edges keep their segment and marker,
+/// interface edges get their interface id and the neighbour across.
+inline std::vector<edge_tag>
+subdomain_edge_tags(const id_loop& tl, index_t s, const decomposition& d,
+                    const std::map<index_pair, index_t>& edge_interface) {
+  std::vector<edge_tag> tags;
+  for (index_t i = 0; i < tl.v.size(); ++i) {
+    const madd_edge_tag& t = tl.t[i];
+    edge_tag et;
+    if (t.external) {
+      et.type = edge_tag::kind::external;
+      et.id = t.segment;
+      et.marker = t.marker;
+    } else {
+      const index_t a = tl.v[i], b = tl.v[(i + 1) % tl.v.size()];
+      et.type = edge_tag::kind::interface;
+      et.id = edge_interface.at({std::min(a, b), std::max(a, b)});
+      const interface_curve& c = d.interfaces[et.id];
+      et.neighbour = c.a == s ? c.b : c.a;
     }
-    sd.area = area;
-    d.subdomains.push_back(std::move(sd));
+    tags.push_back(et);
   }
+  return tags;
+}
+
+/// Subdomain s of d from its numbered loops: loops, tags, and its area (the sum of the
+/// signed loop areas, outer counter-clockwise, holes clockwise).
+inline subdomain make_subdomain(const std::vector<id_loop>& loops, index_t s,
+                                const decomposition& d,
+                                const std::map<index_pair, index_t>& edge_interface) {
+  subdomain sd;
+  for (const id_loop& tl : loops) {
+    sd.tags.push_back(subdomain_edge_tags(tl, s, d, edge_interface));
+    sd.loops.push_back(tl.v);
+  }
+  double area = 0.0;
+  for (const auto& l : sd.loops) {
+    std::vector<point> p;
+    for (const index_t v : l)
+      p.push_back(d.vertices[v]);
+    area += signed_area(p);
+  }
+  sd.area = area;
+  return sd;
+}
+
+/// The decomposition value of the final regions: vertex ids in lexicographic order of the
+/// coordinates, every loop starting at its smallest id, holes ordered by their first id,
+/// subdomains ordered by their outer loops, interfaces found from the shared edges.
+/// \throws internal_error if an interface edge is not shared by exactly two regions.
+inline decomposition assemble_decomposition(const std::vector<madd_region>& regions) {
+  decomposition d;
+  number_vertices(regions, d);
+  const std::vector<std::vector<id_loop>> subs = numbered_loops(regions, d);
+  std::map<index_pair, index_t> edge_interface;
+  for (const auto& [sides, edges] : shared_interface_edges(subs))
+    chain_interface_edges(sides, edges, d, edge_interface);
+  for (index_t s = 0; s < subs.size(); ++s)
+    d.subdomains.push_back(make_subdomain(subs[s], s, d, edge_interface));
   return d;
 }
 
