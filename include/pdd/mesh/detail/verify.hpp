@@ -51,18 +51,44 @@ public:
   /// \pre valid[t] says whether triangle t has three distinct in-range vertex indices; other
   ///   triangles are left out.
   edge_table(const triangle_mesh& m, const std::vector<char>& valid) {
+    build_edges(m, valid);
+    build_incidence(m.vertices.size());
+  }
+
+  std::vector<edge_record>& edges() noexcept { return edges_; }
+  const std::vector<edge_record>& edges() const noexcept { return edges_; }
+
+  /// Ids of the edges incident to vertex v.
+  template <class F>
+  void for_each_incident(index_t v, F&& f) const {
+    for (index_t k = adj_start_[v]; k < adj_start_[v + 1]; ++k)
+      f(adj_[k]);
+  }
+
+private:
+  /// One side of an edge: its larger endpoint b, the triangle and its direction.
+  struct half_edge {
+    index_t b, t;
+    bool forward;
+  };
+
+  static index_t min_end(const std::array<index_t, 3>& tri, int i) {
+    return std::min(tri[i], tri[(i + 1) % 3]);
+  }
+
+  /// The half-edges of the valid triangles bucket-sorted by their smaller endpoint a: those
+  /// of vertex a are halves[start[a] .. start[a + 1]).
+  static std::vector<half_edge> bucket_half_edges(const triangle_mesh& m,
+                                                  const std::vector<char>& valid,
+                                                  std::vector<index_t>& start) {
     const std::size_t nv = m.vertices.size();
-    std::vector<index_t> start(nv + 1, 0);
+    start.assign(nv + 1, 0);
     for (std::size_t t = 0; t < m.triangles.size(); ++t)
       if (valid[t])
         for (int i = 0; i < 3; ++i)
           ++start[min_end(m.triangles[t], i) + 1];
     std::partial_sum(start.begin(), start.end(), start.begin());
-    struct half {
-      index_t b, t;
-      bool forward;
-    };
-    std::vector<half> halves(start[nv]);
+    std::vector<half_edge> halves(start[nv]);
     std::vector<index_t> fill(start.begin(), start.end() - 1);
     for (std::size_t t = 0; t < m.triangles.size(); ++t) {
       if (!valid[t]) continue;
@@ -72,11 +98,19 @@ public:
         halves[fill[std::min(u, v)]++] = {std::max(u, v), static_cast<index_t>(t), u < v};
       }
     }
+    return halves;
+  }
+
+  /// edges_: the half-edges of each bucket sorted by (b, triangle) and merged into records.
+  void build_edges(const triangle_mesh& m, const std::vector<char>& valid) {
+    std::vector<index_t> start;
+    std::vector<half_edge> halves = bucket_half_edges(m, valid, start);
     edges_.reserve(halves.size() / 2 + 16);
-    for (index_t a = 0; a < nv; ++a) {
+    for (index_t a = 0; a < m.vertices.size(); ++a) {
       auto first = halves.begin() + start[a], last = halves.begin() + start[a + 1];
-      std::sort(first, last,
-                [](const half& x, const half& y) { return x.b != y.b ? x.b < y.b : x.t < y.t; });
+      std::sort(first, last, [](const half_edge& x, const half_edge& y) {
+        return x.b != y.b ? x.b < y.b : x.t < y.t;
+      });
       for (auto it = first; it != last; ++it) {
         if (it == first || it->b != (it - 1)->b) edges_.push_back({a, it->b});
         edge_record& e = edges_.back();
@@ -87,7 +121,10 @@ public:
         ++e.count;
       }
     }
-    // Vertex -> incident edge ids (both endpoints).
+  }
+
+  /// Vertex -> incident edge ids (both endpoints): adj_[adj_start_[v] .. adj_start_[v + 1]).
+  void build_incidence(std::size_t nv) {
     adj_start_.assign(nv + 1, 0);
     for (const edge_record& e : edges_) {
       ++adj_start_[e.a + 1];
@@ -102,20 +139,6 @@ public:
     }
   }
 
-  std::vector<edge_record>& edges() noexcept { return edges_; }
-  const std::vector<edge_record>& edges() const noexcept { return edges_; }
-
-  /// Ids of the edges incident to vertex v.
-  template <class F>
-  void for_each_incident(index_t v, F&& f) const {
-    for (index_t k = adj_start_[v]; k < adj_start_[v + 1]; ++k)
-      f(adj_[k]);
-  }
-
-private:
-  static index_t min_end(const std::array<index_t, 3>& tri, int i) {
-    return std::min(tri[i], tri[(i + 1) % 3]);
-  }
   std::vector<edge_record> edges_;
   std::vector<index_t> adj_start_;
   std::vector<index_t> adj_;
