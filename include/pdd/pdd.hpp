@@ -108,6 +108,7 @@
 
 // level 7: mesh
 #include <pdd/mesh/merge.hpp>
+#include <pdd/mesh/mesh_statistics.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
