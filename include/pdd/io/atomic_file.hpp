@@ -4,47 +4,16 @@
 #pragma once
 
 #include <pdd/errors.hpp>
+#include <pdd/io/detail/atomic_file.hpp>
 
-#include <atomic>
-#include <cerrno>
 #include <concepts>
-#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <ostream>
-#include <random>
 #include <string>
-#include <system_error>
-#include <utility>
 
 namespace pdd {
-
-namespace detail {
-
-/// A fresh name in the directory of `target`: ".<name>.pdd-tmp-<16 hex digits>". The digits mix a
-/// per-process random salt with a process-wide counter, so concurrent writers (threads or
-/// processes) never share a temporary file.
-inline std::filesystem::path temporary_sibling(const std::filesystem::path& target) {
-  static const std::uint64_t salt = [] {
-    std::random_device rd;
-    return (static_cast<std::uint64_t>(rd()) << 32) ^ rd();
-  }();
-  static std::atomic<std::uint64_t> counter{0};
-  std::uint64_t x = salt ^ (counter.fetch_add(1) * 0x9e3779b97f4a7c15ULL);
-  x ^= x >> 31; // spread the counter's bits over all digits
-  static constexpr char hex[] = "0123456789abcdef";
-  std::string digits(16, '0');
-  for (int i = 15; i >= 0; --i, x >>= 4)
-    digits[static_cast<std::size_t>(i)] = hex[x & 15];
-  return target.parent_path() / ("." + target.filename().string() + ".pdd-tmp-" + digits);
-}
-
-inline std::string errno_message(int e) {
-  return e != 0 ? std::generic_category().message(e) : std::string("unknown reason");
-}
-
-} // namespace detail
 
 /// Writes a file atomically: `writer(os)` writes the whole content to a temporary file in the
 /// same directory as `path`; the stream is flushed, closed and checked, and only then renamed
@@ -62,50 +31,24 @@ inline std::string errno_message(int e) {
 template <class Writer>
 requires std::invocable<Writer&, std::ostream&>
 void write_file_atomically(const std::filesystem::path& path, Writer&& writer) {
-  namespace fs = std::filesystem;
   const std::string where = "cannot write '" + path.string() + "': ";
   if (path.empty() || !path.has_filename()) throw error(where + "not a file name");
-  const fs::path tmp = detail::temporary_sibling(path);
-
-  std::ofstream out;
-  errno = 0;
-  out.open(tmp, std::ios::binary | std::ios::trunc);
-  if (!out.is_open())
-    throw error(where + "cannot create a temporary file there (" + detail::errno_message(errno) +
-                ")");
-
-  const auto discard = [&]() noexcept {
-    try {
-      out.close();
-    } catch (...) {
-    }
-    std::error_code ec;
-    fs::remove(tmp, ec);
-  };
+  const std::filesystem::path tmp = detail::temporary_sibling(path);
+  std::ofstream out = detail::open_temporary(tmp, where);
   try {
     writer(static_cast<std::ostream&>(out));
-    out.flush();
-    if (!out) throw error(where + "write failed (" + detail::errno_message(errno) + ")");
-    out.close();
-    if (out.fail()) throw error(where + "closing the file failed");
+    detail::finish_temporary(out, where);
   } catch (const error&) {
-    discard();
+    detail::discard_temporary(out, tmp);
     throw;
   } catch (const std::exception& e) {
-    discard();
+    detail::discard_temporary(out, tmp);
     throw error(where + e.what());
   } catch (...) {
-    discard();
+    detail::discard_temporary(out, tmp);
     throw;
   }
-
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmp, ignored);
-    throw error(where + "renaming the temporary file failed (" + ec.message() + ")");
-  }
+  detail::rename_temporary(tmp, path, where);
 }
 
 } // namespace pdd
