@@ -2,10 +2,10 @@
 /// Implementation of pdd/geometry/validate.hpp: the individual checks.
 #pragma once
 
-#include <pdd/geometry/detail/loops.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/geometry/loops.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/geometry/detail/loops.hpp>
+#include <pdd/geometry/loops.hpp>
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/Spatial_sort_traits_adapter_2.h>
@@ -171,14 +171,10 @@ inline void check_intersections(const pslg& g) {
       {first->s, first->t});
 }
 
-/// Hole points lie inside holes (regions at even level >= 2), not on segments, and every
-/// region at even level >= 2 has a hole point. Point location with CGAL's walk, hole points
-/// visited in spatial (Hilbert) order with the previous face as hint.
-inline void check_holes(const pslg& g, const loops_with_triangulation& lt) {
-  const auto& t = lt.triangulation;
-  const auto& loops = lt.structure.loops;
-  std::vector<char> has_hole(loops.size(), 0);
-  std::vector<epick::Point_2> pts;
+/// The indices of g's hole points in spatial (Hilbert) order, so that each point location
+/// can start from the face of the previous one.
+inline std::vector<std::size_t> holes_in_spatial_order(const pslg& g,
+                                                       std::vector<epick::Point_2>& pts) {
   for (const point& h : g.holes)
     pts.push_back(to_cgal(h));
   std::vector<std::size_t> order(pts.size());
@@ -187,31 +183,49 @@ inline void check_holes(const pslg& g, const loops_with_triangulation& lt) {
   CGAL::spatial_sort(
       order.begin(), order.end(),
       CGAL::Spatial_sort_traits_adapter_2<epick, pmap>(CGAL::make_property_map(pts)));
+  return order;
+}
+
+/// Checks that hole point i, located in face f (lt_type, li as CGAL's locate), lies strictly
+/// inside a hole (a region at even level >= 2); returns the loop that bounds that hole.
+/// \throws geometry_error naming the hole point otherwise.
+inline index_t hole_loop_of(const pslg& g, const pslg_cdt& cdt, std::size_t i,
+                            pslg_cdt::Face_handle f, pslg_cdt::Locate_type lt_type, int li) {
+  const std::string name = "hole point " + std::to_string(i) + " " + coords(g.holes[i]);
+  if (lt_type == pslg_cdt::VERTEX)
+    throw geometry_error(
+        name + " lies on vertex " + std::to_string(f->vertex(li)->info()) + ", on a segment", {i});
+  if (lt_type == pslg_cdt::EDGE && f->is_constrained(li)) {
+    const index_t a = f->vertex(pslg_cdt::cw(li))->info();
+    const index_t b = f->vertex(pslg_cdt::ccw(li))->info();
+    throw geometry_error(name + " lies on the segment between vertices " +
+                             std::to_string(std::min(a, b)) + " and " +
+                             std::to_string(std::max(a, b)),
+                         {i});
+  }
+  const int level = cdt.is_infinite(f) ? 0 : f->info().level;
+  if (level == 0)
+    throw geometry_error(name + " lies outside the domain (not inside any loop)", {i});
+  if (level % 2 == 1)
+    throw geometry_error(name + " lies inside the meshed domain, not inside a hole loop", {i});
+  return f->info().owner;
+}
+
+/// Hole points lie inside holes (regions at even level >= 2), not on segments, and every
+/// region at even level >= 2 has a hole point. Point location with CGAL's walk, hole points
+/// visited in spatial (Hilbert) order with the previous face as hint.
+inline void check_holes(const pslg& g, const loops_with_triangulation& lt) {
+  const auto& t = lt.triangulation;
+  const auto& loops = lt.structure.loops;
+  std::vector<char> has_hole(loops.size(), 0);
+  std::vector<epick::Point_2> pts;
   pslg_cdt::Face_handle hint;
-  for (std::size_t i : order) {
+  for (std::size_t i : holes_in_spatial_order(g, pts)) {
     pslg_cdt::Locate_type lt_type;
     int li = 0;
     const auto f = t.cdt.locate(pts[i], lt_type, li, hint);
     hint = f;
-    const std::string name = "hole point " + std::to_string(i) + " " + coords(g.holes[i]);
-    if (lt_type == pslg_cdt::VERTEX)
-      throw geometry_error(name + " lies on vertex " + std::to_string(f->vertex(li)->info()) +
-                               ", on a segment",
-                           {i});
-    if (lt_type == pslg_cdt::EDGE && f->is_constrained(li)) {
-      const index_t a = f->vertex(pslg_cdt::cw(li))->info();
-      const index_t b = f->vertex(pslg_cdt::ccw(li))->info();
-      throw geometry_error(name + " lies on the segment between vertices " +
-                               std::to_string(std::min(a, b)) + " and " +
-                               std::to_string(std::max(a, b)),
-                           {i});
-    }
-    const int level = t.cdt.is_infinite(f) ? 0 : f->info().level;
-    if (level == 0)
-      throw geometry_error(name + " lies outside the domain (not inside any loop)", {i});
-    if (level % 2 == 1)
-      throw geometry_error(name + " lies inside the meshed domain, not inside a hole loop", {i});
-    has_hole[f->info().owner] = 1;
+    has_hole[hole_loop_of(g, t.cdt, i, f, lt_type, li)] = 1;
   }
   for (std::size_t l = 0; l < loops.size(); ++l)
     if (!loops[l].bounds_domain_inside && !has_hole[l])
