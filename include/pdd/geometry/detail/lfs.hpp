@@ -56,12 +56,13 @@ inline epick::Point_2 foot_point(const epick::Point_2& p, const epick::Point_2& 
 /// faces the segment crosses (exact orientation predicates on v, x and face vertices).
 /// A walk through a vertex w answers false; that is safe for lfs_min because |vw| < |vx|
 /// and vw is then a shorter admissible vertex-vertex distance.
-inline bool visible_in_domain(const loop_triangulation& t, pslg_cdt::Vertex_handle v,
-                              const epick::Point_2& x, pslg_cdt::Face_handle target) {
+/// The face around vertex v that the segment from v to x enters, with its vertices right and
+/// left of the segment; false if the segment runs along an edge through a vertex or enters
+/// no finite face (then it is not visible in the sense of visible_in_domain).
+inline bool first_face_towards(const loop_triangulation& t, pslg_cdt::Vertex_handle v,
+                               const epick::Point_2& x, pslg_cdt::Face_handle& f,
+                               pslg_cdt::Vertex_handle& left, pslg_cdt::Vertex_handle& right) {
   const auto& vp = v->point();
-  if (vp == x) return true;
-  pslg_cdt::Face_handle f;
-  pslg_cdt::Vertex_handle left, right;
   auto fc = t.cdt.incident_faces(v);
   const auto done = fc;
   do {
@@ -74,13 +75,28 @@ inline bool visible_in_domain(const loop_triangulation& t, pslg_cdt::Vertex_hand
       f = fc;
       right = p;
       left = q;
-      break;
+      return true;
     }
     if ((o1 == CGAL::COLLINEAR && CGAL::angle(p->point(), vp, x) == CGAL::ACUTE) ||
         (o2 == CGAL::COLLINEAR && CGAL::angle(q->point(), vp, x) == CGAL::ACUTE))
       return false; // along an edge, through a vertex
   } while (++fc != done);
-  if (f == pslg_cdt::Face_handle()) return false;
+  return false;
+}
+
+/// True if the straight segment from vertex v to x (a point on a constrained edge of face
+/// `target`, seen from inside target) crosses no constrained edge and passes through no
+/// vertex before it enters `target`: then it lies in the closure of the domain. Walks the
+/// faces the segment crosses (exact orientation predicates on v, x and face vertices).
+/// A walk through a vertex w answers false; that is safe for lfs_min because |vw| < |vx|
+/// and vw is then a shorter admissible vertex-vertex distance.
+inline bool visible_in_domain(const loop_triangulation& t, pslg_cdt::Vertex_handle v,
+                              const epick::Point_2& x, pslg_cdt::Face_handle target) {
+  const auto& vp = v->point();
+  if (vp == x) return true;
+  pslg_cdt::Face_handle f;
+  pslg_cdt::Vertex_handle left, right;
+  if (!first_face_towards(t, v, x, f, left, right)) return false;
   for (std::size_t steps = 0; steps <= t.faces.size(); ++steps) {
     if (f == target) return true;
     const int i = 3 - f->index(left) - f->index(right);
@@ -109,6 +125,56 @@ inline double face_distance(const epick::Point_2& p, pslg_cdt::Face_handle f) {
   return d;
 }
 
+/// Step 1 of lfs_min: the length of the shortest CDT edge with a domain face on one side.
+inline double shortest_domain_edge(const loop_triangulation& t) {
+  double best = std::numeric_limits<double>::infinity();
+  for (auto e = t.cdt.finite_edges_begin(); e != t.cdt.finite_edges_end(); ++e) {
+    const auto f = e->first, n = f->neighbor(e->second);
+    if (!((!t.cdt.is_infinite(f) && in_domain(f)) || (!t.cdt.is_infinite(n) && in_domain(n))))
+      continue;
+    best = std::min(best, point_distance(f->vertex(pslg_cdt::cw(e->second))->point(),
+                                         f->vertex(pslg_cdt::ccw(e->second))->point()));
+  }
+  return best;
+}
+
+/// Step 2 of lfs_min for vertex vi: min(best, the distance to every constrained edge whose
+/// foot from vi lies in its interior and is visible in the domain), by a breadth-first
+/// search over domain faces pruned at best. stamp (per face, the last vertex that queued
+/// it) and queue are scratch space reused across vertices.
+inline double nearest_visible_segment(const loop_triangulation& t, index_t vi, double best,
+                                      std::vector<index_t>& stamp,
+                                      std::vector<pslg_cdt::Face_handle>& queue) {
+  const auto v = t.vertex[vi];
+  const auto& p = v->point();
+  queue.clear();
+  auto fc = t.cdt.incident_faces(v);
+  const auto done = fc;
+  do {
+    if (t.cdt.is_infinite(fc) || !in_domain(fc)) continue;
+    stamp[fc->info().id] = vi;
+    queue.push_back(fc);
+  } while (++fc != done);
+  for (std::size_t qi = 0; qi < queue.size(); ++qi) {
+    const auto f = queue[qi];
+    for (int i = 0; i < 3; ++i) {
+      if (f->is_constrained(i)) {
+        const auto a = f->vertex(pslg_cdt::cw(i)), b = f->vertex(pslg_cdt::ccw(i));
+        if (a == v || b == v || !foot_in_interior(p, a->point(), b->point())) continue;
+        const double d = line_distance(p, a->point(), b->point());
+        if (d < best && visible_in_domain(t, v, foot_point(p, a->point(), b->point()), f)) best = d;
+        continue;
+      }
+      const auto n = f->neighbor(i);
+      if (t.cdt.is_infinite(n) || stamp[n->info().id] == vi) continue;
+      stamp[n->info().id] = vi;
+      // the slack keeps faces whose rounded distance ties the minimum
+      if (face_distance(p, n) <= best * (1.0 + 1e-12)) queue.push_back(n);
+    }
+  }
+  return best;
+}
+
 /// Minimum local feature size (Definition 7) of a PSLG from its labelled triangulation.
 ///
 /// 1. Vertex-vertex: the minimising pair is an edge of the CDT (a shorter visible vertex
@@ -122,46 +188,11 @@ inline double face_distance(const epick::Point_2& p, pslg_cdt::Face_handle f) {
 /// Complexity O(n log n) for the CDT plus O(n) expected for the searches (each explores
 /// the faces within the current minimum of a vertex).
 inline double lfs_min(const pslg& g, const loop_triangulation& t) {
-  double best = std::numeric_limits<double>::infinity();
-  for (auto e = t.cdt.finite_edges_begin(); e != t.cdt.finite_edges_end(); ++e) {
-    const auto f = e->first, n = f->neighbor(e->second);
-    if (!((!t.cdt.is_infinite(f) && in_domain(f)) || (!t.cdt.is_infinite(n) && in_domain(n))))
-      continue;
-    best = std::min(best, point_distance(f->vertex(pslg_cdt::cw(e->second))->point(),
-                                         f->vertex(pslg_cdt::ccw(e->second))->point()));
-  }
+  double best = shortest_domain_edge(t);
   std::vector<index_t> stamp(t.faces.size(), no_index);
   std::vector<pslg_cdt::Face_handle> queue;
-  for (index_t vi = 0; vi < g.vertices.size(); ++vi) {
-    const auto v = t.vertex[vi];
-    const auto& p = v->point();
-    queue.clear();
-    auto fc = t.cdt.incident_faces(v);
-    const auto done = fc;
-    do {
-      if (t.cdt.is_infinite(fc) || !in_domain(fc)) continue;
-      stamp[fc->info().id] = vi;
-      queue.push_back(fc);
-    } while (++fc != done);
-    for (std::size_t qi = 0; qi < queue.size(); ++qi) {
-      const auto f = queue[qi];
-      for (int i = 0; i < 3; ++i) {
-        if (f->is_constrained(i)) {
-          const auto a = f->vertex(pslg_cdt::cw(i)), b = f->vertex(pslg_cdt::ccw(i));
-          if (a == v || b == v || !foot_in_interior(p, a->point(), b->point())) continue;
-          const double d = line_distance(p, a->point(), b->point());
-          if (d < best && visible_in_domain(t, v, foot_point(p, a->point(), b->point()), f))
-            best = d;
-          continue;
-        }
-        const auto n = f->neighbor(i);
-        if (t.cdt.is_infinite(n) || stamp[n->info().id] == vi) continue;
-        stamp[n->info().id] = vi;
-        // the slack keeps faces whose rounded distance ties the minimum
-        if (face_distance(p, n) <= best * (1.0 + 1e-12)) queue.push_back(n);
-      }
-    }
-  }
+  for (index_t vi = 0; vi < g.vertices.size(); ++vi)
+    best = nearest_visible_segment(t, vi, best, stamp, queue);
   return best;
 }
 
