@@ -53,6 +53,35 @@ inline void check_decomposition(const decomposition& d) {
   }
 }
 
+/// The path edge of the interface edge ab of subdomain s (tag t), oriented from its
+/// lexicographically smaller end; its length is set.
+inline path_edge new_path_edge(const decomposition& d, index_t a, index_t b, index_t s,
+                               const edge_tag& t) {
+  if (d.vertices[b] < d.vertices[a]) std::swap(a, b);
+  const point pa = d.vertices[a], pb = d.vertices[b];
+  path_edge e;
+  e.u = a;
+  e.v = b;
+  e.interface_id = t.id;
+  e.sides = {std::min(s, t.neighbour), std::max(s, t.neighbour)};
+  e.length = std::hypot(pb.x - pa.x, pb.y - pa.y);
+  return e;
+}
+
+/// Records that subdomain s (tag t) uses path edge e, already seen from the sides in
+/// `seen` (bit 1: e.sides[0], bit 2: e.sides[1]).
+/// \throws pdd::decoupling_error if s is not a side of e, has used it before, or names
+/// another neighbour.
+inline void mark_second_side(const path_edge& e, std::uint8_t& seen, index_t a, index_t b,
+                             index_t s, const edge_tag& t) {
+  const std::uint8_t side = s == e.sides[0] ? 1 : (s == e.sides[1] ? 2 : 4);
+  if (side == 4 || (seen & side) || t.neighbour != e.sides[side == 1 ? 1 : 0])
+    throw decoupling_error("interface edge between vertices " + std::to_string(a) + " and " +
+                           std::to_string(b) + " (subdomain " + std::to_string(s) +
+                           ") does not match its other side");
+  seen |= side;
+}
+
 /// Collects the separator segments of d: one path_edge per interface loop edge pair, numbered
 /// in order of first appearance (subdomains, loops and edges in order), and fills
 /// loop_edge_path. Lengths are set; k, pieces and points are not.
@@ -65,39 +94,24 @@ inline void collect_path_edges(const decomposition& d, std::vector<path_edge>& p
   loop_edge_path.assign(d.subdomains.size(), {});
   for (index_t s = 0; s < d.subdomains.size(); ++s) {
     const subdomain& sd = d.subdomains[s];
-    auto& lep = loop_edge_path[s];
     for (std::size_t l = 0; l < sd.loops.size(); ++l) {
       const auto& loop = sd.loops[l];
       for (std::size_t i = 0; i < loop.size(); ++i) {
         const edge_tag& t = sd.tags[l][i];
         if (t.type == edge_tag::kind::external) {
-          lep.push_back(no_index);
+          loop_edge_path[s].push_back(no_index);
           continue;
         }
-        index_t a = loop[i], b = loop[(i + 1) % loop.size()];
+        const index_t a = loop[i], b = loop[(i + 1) % loop.size()];
         const std::uint64_t key = (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
         const auto [it, fresh] = index.emplace(key, static_cast<index_t>(path.size()));
         if (fresh) {
-          if (d.vertices[b] < d.vertices[a]) std::swap(a, b);
-          const point pa = d.vertices[a], pb = d.vertices[b];
-          path_edge e;
-          e.u = a;
-          e.v = b;
-          e.interface_id = t.id;
-          e.sides = {std::min(s, t.neighbour), std::max(s, t.neighbour)};
-          e.length = std::hypot(pb.x - pa.x, pb.y - pa.y);
-          path.push_back(e);
-          seen.push_back(s == e.sides[0] ? 1 : 2);
+          path.push_back(new_path_edge(d, a, b, s, t));
+          seen.push_back(s == path.back().sides[0] ? 1 : 2);
         } else {
-          const path_edge& e = path[it->second];
-          const std::uint8_t side = s == e.sides[0] ? 1 : (s == e.sides[1] ? 2 : 4);
-          if (side == 4 || (seen[it->second] & side) || t.neighbour != e.sides[side == 1 ? 1 : 0])
-            throw decoupling_error("interface edge between vertices " + std::to_string(a) +
-                                   " and " + std::to_string(b) + " (subdomain " +
-                                   std::to_string(s) + ") does not match its other side");
-          seen[it->second] |= side;
+          mark_second_side(path[it->second], seen[it->second], a, b, s, t);
         }
-        lep.push_back(it->second);
+        loop_edge_path[s].push_back(it->second);
       }
     }
   }
