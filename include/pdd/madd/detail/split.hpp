@@ -323,6 +323,25 @@ inline void separator_measures(const madd_triangulation& tr, const madd_graph& g
   }
 }
 
+/// Repair 5.1 of a bisection with pinch vertices `bad` (several cut pieces end there): at
+/// every such vertex all cut faces but the cheapest become uncuttable (contracted next).
+inline void keep_cheapest_cut_pieces(madd_graph& g, const std::vector<std::uint8_t>& part,
+                                     const std::vector<std::uint32_t>& bad) {
+  for (const std::uint32_t z : bad) {
+    std::int64_t keep = -1;
+    for (std::size_t i = 0; i < g.faces.size(); ++i) {
+      const madd_cell_face& f = g.faces[i];
+      if (!is_cut(f, part) || (f.z0 != z && f.z1 != z)) continue;
+      if (keep < 0 || f.weight < g.faces[keep].weight) keep = static_cast<std::int64_t>(i);
+    }
+    for (std::size_t i = 0; i < g.faces.size(); ++i) {
+      madd_cell_face& f = g.faces[i];
+      if (static_cast<std::int64_t>(i) != keep && is_cut(f, part) && (f.z0 == z || f.z1 == z))
+        f.cuttable = false;
+    }
+  }
+}
+
 /// Bisects the contracted graph with repairs; on success fills out (children, measures).
 template <GraphPartitioner P>
 bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_graph& g,
@@ -350,23 +369,50 @@ bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_grap
     }
     // 5.1: contract all but the cheapest cut piece at every vertex where several end.
     ++out.repairs;
-    for (const std::uint32_t z : bad) {
-      std::int64_t keep = -1;
-      for (std::size_t i = 0; i < g.faces.size(); ++i) {
-        const madd_cell_face& f = g.faces[i];
-        if (!is_cut(f, part) || (f.z0 != z && f.z1 != z)) continue;
-        if (keep < 0 || f.weight < g.faces[keep].weight) keep = static_cast<std::int64_t>(i);
-      }
-      for (std::size_t i = 0; i < g.faces.size(); ++i) {
-        madd_cell_face& f = g.faces[i];
-        if (static_cast<std::int64_t>(i) != keep && is_cut(f, part) && (f.z0 == z || f.z1 == z))
-          f.cuttable = false;
-      }
-    }
+    keep_cheapest_cut_pieces(g, part, bad);
     contract(g);
   }
   out.failure = "the repairs did not converge";
   return false;
+}
+
+/// One refinement level of split_region: the region triangulated at spacing
+/// o.target_length * 2^-level, its graph (algorithm 1 without junction triangles falls back
+/// to algorithm 2 on this triangulation), and a bisection with repairs. ok is false, with
+/// failure set, when the level gives no acceptable separator.
+template <GraphPartitioner P>
+madd_split_result split_at_level(const madd_region& r, const madd_split_options& o,
+                                 const P& partitioner, int level) {
+  const double h = std::ldexp(o.target_length, -level);
+  const madd_triangulation tr = triangulate_region(r, h, o.max_encroachment_depth);
+  madd_graph g = build_madd_graph(tr, o.graph);
+  madd_split_result cur;
+  if (o.graph.algorithm == 1 && g.junctions == 0) {
+    // No junction triangle at all (an exactly symmetric boundary, e.g. a refined square,
+    // has only right-angled Delaunay triangles at every level): use algorithm 2's
+    // Delaunay-edge separators on this triangulation.
+    madd_graph_options go = o.graph;
+    go.algorithm = 2;
+    g = build_madd_graph(tr, go);
+    cur.fallback = true;
+  }
+  cur.level = level;
+  cur.z_points = tr.z.size();
+  cur.junctions = g.junctions;
+  if (g.nodes < 2) {
+    cur.failure = "no acceptable separator (" + std::to_string(g.junctions) +
+                  " junction triangles, " + std::to_string(tr.z.size()) +
+                  " boundary points) after " + std::to_string(level + 1) + " refinement levels";
+    return cur;
+  }
+  if (!bisect_region(r, tr, g, o, partitioner, cur)) {
+    cur.failure += " (refinement level " + std::to_string(level) + ")";
+    return cur;
+  }
+  cur.ok = true;
+  cur.max_fraction = std::max(cur.children[0].area, cur.children[1].area) /
+                     (cur.children[0].area + cur.children[1].area);
+  return cur;
 }
 
 /// Splits a region in two (one MADD step with dynamic refinement). Deterministic: a pure
@@ -380,38 +426,11 @@ madd_split_result split_region(const madd_region& r, const madd_split_options& o
   int stop_level = o.max_levels;
   for (int level = 0; level < stop_level; ++level) {
     ++best.levels_tried;
-    const double h = std::ldexp(o.target_length, -level);
-    const madd_triangulation tr = triangulate_region(r, h, o.max_encroachment_depth);
-    madd_graph g = build_madd_graph(tr, o.graph);
-    madd_split_result cur;
-    if (o.graph.algorithm == 1 && g.junctions == 0) {
-      // No junction triangle at all (an exactly symmetric boundary, e.g. a refined square,
-      // has only right-angled Delaunay triangles at every level): use algorithm 2's
-      // Delaunay-edge separators on this triangulation.
-      madd_graph_options go = o.graph;
-      go.algorithm = 2;
-      g = build_madd_graph(tr, go);
-      cur.fallback = true;
-    }
-    cur.level = level;
-    cur.z_points = tr.z.size();
-    cur.junctions = g.junctions;
-    if (g.nodes < 2) {
-      if (!best.ok)
-        best.failure = "no acceptable separator (" + std::to_string(g.junctions) +
-                       " junction triangles, " + std::to_string(tr.z.size()) +
-                       " boundary points) after " + std::to_string(level + 1) +
-                       " refinement levels";
+    madd_split_result cur = split_at_level(r, o, partitioner, level);
+    if (!cur.ok) {
+      if (!best.ok) best.failure = std::move(cur.failure);
       continue;
     }
-    if (!bisect_region(r, tr, g, o, partitioner, cur)) {
-      if (!best.ok)
-        best.failure = cur.failure + " (refinement level " + std::to_string(level) + ")";
-      continue;
-    }
-    cur.ok = true;
-    cur.max_fraction = std::max(cur.children[0].area, cur.children[1].area) /
-                       (cur.children[0].area + cur.children[1].area);
     cur.levels_tried = best.levels_tried;
     if (!best.ok || cur.max_fraction < best.max_fraction) best = std::move(cur);
     if (best.max_fraction <= o.imbalance_bound) break;
