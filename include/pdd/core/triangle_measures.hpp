@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstddef>
 #include <numbers>
+#include <vector>
 
 namespace pdd::detail {
 
@@ -35,6 +36,11 @@ double polygon_signed_area(std::size_t n, PointAt&& at) {
   for (std::size_t i = 1; i + 1 < n; ++i)
     twice += twice_signed_area(o, at(i), at(i + 1));
   return 0.5 * twice;
+}
+
+/// polygon_signed_area of the closed polygon pts[0], ..., pts[n - 1].
+inline double polygon_signed_area(const std::vector<point>& pts) {
+  return polygon_signed_area(pts.size(), [&](std::size_t i) { return pts[i]; });
 }
 
 /// Centroid of the triangle (a, b, c); the point where sizing fields are sampled.

@@ -333,12 +333,8 @@ inline subdomain make_subdomain(const std::vector<id_loop>& loops, index_t s,
     sd.loops.push_back(tl.v);
   }
   double area = 0.0;
-  for (const auto& l : sd.loops) {
-    std::vector<point> p;
-    for (const index_t v : l)
-      p.push_back(d.vertices[v]);
-    area += signed_area(p);
-  }
+  for (const auto& l : sd.loops)
+    area += polygon_signed_area(l.size(), [&](std::size_t i) { return d.vertices[l[i]]; });
   sd.area = area;
   return sd;
 }

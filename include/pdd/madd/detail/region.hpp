@@ -11,6 +11,7 @@
 #pragma once
 
 #include <pdd/core/point.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>
@@ -86,30 +87,11 @@ inline double interior_angle_deg(point prev, point v, point next) noexcept {
   return d;
 }
 
-/// Shoelace area of a closed polygon (> 0: counter-clockwise).
-/// This is the trapezoid form sum (x_i - x_{i+1}) (y_i + y_{i+1}), not the fan form of
-/// pdd::detail::polygon_signed_area that geometry/ and subdomain_pslg use: the two round
-/// differently in the last bits, and MADD's region areas are not a side statistic but drive
-/// its decisions (which leaf to split next, the area targets and max_subdomain_area tests of
-/// the split rounds, the `subdomain <area>` written to decomposition files). Switching the
-/// formula would change decompositions in the last bits relative to the ones this code has
-/// always produced (and the regression data recorded from them), so it is kept as is.
-inline double signed_area(const std::vector<point>& pts) noexcept {
-  const std::size_t n = pts.size();
-  double s = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const point& a = pts[i];
-    const point& b = pts[(i + 1) % n];
-    s += (a.x - b.x) * (a.y + b.y);
-  }
-  return 0.5 * s;
-}
-
 /// Area of a region: outer loop area minus the holes' (sum of the signed loop areas).
 inline double region_area(const madd_region& r) noexcept {
   double a = 0.0;
   for (const madd_loop& l : r.loops)
-    a += signed_area(l.points);
+    a += polygon_signed_area(l.points);
   return a;
 }
 

@@ -263,7 +263,7 @@ inline bool assemble_child(const madd_region& r, const madd_triangulation& tr, c
     madd_loop loop;
     if (!trace_child_loop(r, tr, g, b, s0, done, loop)) return false;
     if (loop.size() < 3) return false;
-    if (signed_area(loop.points) > 0.0) {
+    if (polygon_signed_area(loop.points) > 0.0) {
       if (outer >= 0) return false;
       outer = static_cast<int>(child.loops.size());
     }

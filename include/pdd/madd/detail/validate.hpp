@@ -169,7 +169,7 @@ inline double check_subdomain_edges(const decomposition& d, std::size_t s,
         pr.push_back(name + ": separator angle " + std::to_string(ang) + " deg at vertex " +
                      std::to_string(a) + " is below " + std::to_string(o.min_angle_deg));
     }
-    area += signed_area(pts);
+    area += polygon_signed_area(pts);
   }
   if (std::abs(area - sd.area) > 1e-12 * std::max(1.0, std::abs(area)) + 1e-9 * std::abs(area))
     pr.push_back(name + ": area field " + std::to_string(sd.area) + " differs from its loops' " +
