@@ -24,6 +24,7 @@
 // mesher meeting the subdomain sees; pdd::validate_decomposition checks the same set).
 //
 // benchmarks/run_madd.sh runs the table in benchmarks/results/madd.md.
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/pipeline/system.hpp>
 #include <pdd/geometry/loops.hpp>
@@ -244,8 +245,7 @@ mesh_edges edges_of(const tri_list& tris) {
 }
 
 double tri_area(const pdd::triangle_mesh& m, const std::array<index_t, 3>& t) {
-  const point a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
-  return 0.5 * std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+  return pdd::detail::triangle_area(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]);
 }
 
 /// METIS_PartGraphKway on the dual graph: vertex weight = area, edge weight = edge length.

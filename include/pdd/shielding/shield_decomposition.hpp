@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/decomposition.hpp>
@@ -155,8 +156,7 @@ shield_decomposition(decomposition& d, double area_bound, const E& executor = {}
         t.apex_vertex = loop[i];
         t.b_vertex = ip + 1;
         t.c_vertex = ip;
-        if (sd.area > 0.0)
-          sd.area -= 0.5 * std::abs((nb.x - a.x) * (pb.y - a.y) - (nb.y - a.y) * (pb.x - a.x));
+        if (sd.area > 0.0) sd.area -= triangle_area(a, nb, pb);
         out[s].triangles.push_back(t);
       }
       sd.loops[l] = std::move(nl);

@@ -5,9 +5,9 @@
 #pragma once
 
 #include <pdd/core/triangle_measures.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/io/detail/svg.hpp>
 #include <pdd/io/svg_options.hpp>
-#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <array>
@@ -105,7 +105,7 @@ inline double mesh_area(const triangle_mesh& m) {
   double a = 0.0;
   for (const auto& t : m.triangles) {
     const point p = m.vertices[t[0]], q = m.vertices[t[1]], r = m.vertices[t[2]];
-    a += 0.5 * std::abs((q.x - p.x) * (r.y - p.y) - (q.y - p.y) * (r.x - p.x));
+    a += triangle_area(p, q, r);
   }
   return a;
 }
