@@ -22,52 +22,36 @@ inline std::string_view number_after(std::string_view text, std::size_t& i) {
   return text.substr(start, i - start);
 }
 
+/// A group of switch letters pdd refuses, and why (the text after "switch -<letter>").
+struct refused_switches {
+  std::string_view letters;
+  std::string_view reason;
+};
+
+inline constexpr refused_switches refusal_reasons[] = {
+    {"r", " (refine a previous mesh) is not supported: pdd meshes PSLGs whose vertices all lie "
+          "on segment loops, and a mesh's interior vertices do not; mesh the original .poly with "
+          "the finer switches instead"},
+    {"c", " (mesh the convex hull) is not supported: pdd meshes the domain enclosed by the "
+          "segments"},
+    {"D", " (conforming Delaunay) is not supported: pdd's meshes are constrained Delaunay"},
+    {"u", " (a user-defined triunsuitable test) is not supported"},
+    {"wW", " (weighted Delaunay) is not supported"},
+    {"o", " (second-order triangles) is not supported"},
+    {"Y", " (no Steiner points on the boundary) is not supported: pdd splits boundary segments "
+          "when refinement needs it"},
+    {"S", " (a Steiner point budget) is not supported"},
+    {"evg", " (edge, Voronoi or OFF output) is not supported"},
+    {"iFlsLCX", " (a choice of Triangle's internal algorithms or checks) is not supported"},
+    {"hH?", " (help) is not a meshing switch; run pdd-triangle --help"},
+};
+
 /// Why a switch letter is refused (the message names the switch).
 inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
-  switch (c) {
-  case 'r':
-    return sw + " (refine a previous mesh) is not supported: pdd meshes PSLGs whose vertices "
-                "all lie on segment loops, and a mesh's interior vertices do not; mesh the "
-                "original .poly with the finer switches instead";
-  case 'c':
-    return sw + " (mesh the convex hull) is not supported: pdd meshes the domain enclosed by "
-                "the segments";
-  case 'D':
-    return sw + " (conforming Delaunay) is not supported: pdd's meshes are constrained "
-                "Delaunay";
-  case 'u':
-    return sw + " (a user-defined triunsuitable test) is not supported";
-  case 'w':
-  case 'W':
-    return sw + " (weighted Delaunay) is not supported";
-  case 'o':
-    return sw + " (second-order triangles) is not supported";
-  case 'Y':
-    return sw + " (no Steiner points on the boundary) is not supported: pdd splits boundary "
-                "segments when refinement needs it";
-  case 'S':
-    return sw + " (a Steiner point budget) is not supported";
-  case 'e':
-  case 'v':
-  case 'g':
-    return sw + " (edge, Voronoi or OFF output) is not supported";
-  case 'i':
-  case 'F':
-  case 'l':
-  case 's':
-  case 'L':
-  case 'C':
-  case 'X':
-    return sw + " (a choice of Triangle's internal algorithms or checks) is not supported";
-  case 'h':
-  case 'H':
-  case '?':
-    return sw + " (help) is not a meshing switch; run pdd-triangle --help";
-  default:
-    return sw + " is not a Triangle switch pdd supports (supported: p q a A Q V N E P B I "
-                "O z j n)";
-  }
+  for (const refused_switches& r : refusal_reasons)
+    if (r.letters.find(c) != std::string_view::npos) return sw + std::string(r.reason);
+  return sw + " is not a Triangle switch pdd supports (supported: p q a A Q V N E P B I O z j n)";
 }
 
 /// A number after q or a, read with std::from_chars (digits and '.' only, the characters
@@ -81,51 +65,40 @@ inline double switch_number(std::string_view number, const char* letter) {
   return v;
 }
 
-/// Sets the flag of a letter without a number; false for letters pdd does not support.
+/// A switch letter without a number and the flag of switches it sets.
+struct flag_switch {
+  char letter;
+  bool switches::*flag;
+};
+
+inline constexpr flag_switch flag_switches[] = {
+    {'p', &switches::poly},
+    {'A', &switches::regional_attributes},
+    {'Q', &switches::quiet},
+    {'N', &switches::no_node},
+    {'E', &switches::no_ele},
+    {'P', &switches::no_poly},
+    {'B', &switches::no_boundary_markers},
+    {'I', &switches::no_iteration_numbers},
+    {'O', &switches::ignore_holes},
+    {'z', &switches::zero_based},
+    {'j', &switches::jettison},
+    {'n', &switches::neighbors},
+};
+
+/// Sets the flag of a letter without a number (V counts); false for letters pdd does not
+/// support.
 inline bool set_flag(switches& s, char c) {
-  switch (c) {
-  case 'p':
-    s.poly = true;
-    return true;
-  case 'A':
-    s.regional_attributes = true;
-    return true;
-  case 'Q':
-    s.quiet = true;
-    return true;
-  case 'V':
+  if (c == 'V') {
     ++s.verbose;
     return true;
-  case 'N':
-    s.no_node = true;
-    return true;
-  case 'E':
-    s.no_ele = true;
-    return true;
-  case 'P':
-    s.no_poly = true;
-    return true;
-  case 'B':
-    s.no_boundary_markers = true;
-    return true;
-  case 'I':
-    s.no_iteration_numbers = true;
-    return true;
-  case 'O':
-    s.ignore_holes = true;
-    return true;
-  case 'z':
-    s.zero_based = true;
-    return true;
-  case 'j':
-    s.jettison = true;
-    return true;
-  case 'n':
-    s.neighbors = true;
-    return true;
-  default:
-    return false;
   }
+  for (const flag_switch& f : flag_switches)
+    if (f.letter == c) {
+      s.*f.flag = true;
+      return true;
+    }
+  return false;
 }
 
 /// Shortest decimal form of v without an exponent (what Triangle can read back).
