@@ -85,30 +85,24 @@ void output(const std::string& name, const char* not_written, bool quiet, Write 
   write(name);
 }
 
-int run(const cli_options& o) {
-  const auto t0 = std::chrono::steady_clock::now();
+/// The switches of all single-dash arguments, in order.
+/// \throws switch_error for a refused switch or without -p (or a .poly input).
+pdd::triangle::switches read_switches(const cli_options& o) {
   pdd::triangle::switches sw;
   for (const std::string& a : o.switch_args)
     sw = pdd::triangle::parse_switches(a, sw);
   pdd::triangle::switches probe = sw;
-  const std::string base = pdd::triangle::make_file_names(o.input, probe).base; // sets p
+  (void)pdd::triangle::make_file_names(o.input, probe); // sets p for a .poly input
   if (!probe.poly)
     throw pdd::triangle::switch_error("switch -p is required (or a .poly input): pdd meshes the "
                                       "domain enclosed by segments, not the convex hull of a "
                                       ".node file");
-  const bool node_read = std::filesystem::exists(base + ".node");
-  const pdd::triangle::file_names f = pdd::triangle::make_file_names(o.input, sw, node_read);
-  if (!sw.quiet) std::printf("Opening %s.\n", f.poly.c_str());
-  const pdd::pslg in = pdd::read_poly(f.poly);
-  if (!sw.quiet) std::printf("Meshing with pdd's decoupled pipeline.\n");
-  const auto tm = std::chrono::steady_clock::now();
-  const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
-  if (!sw.quiet) {
-    std::size_t n = 0;
-    for (const auto& r : t.runs)
-      n += r.subdomains;
-    std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms_since(tm), n);
-  }
+  return sw;
+}
+
+/// Writes the .node, .ele, .poly and .neigh files the switches ask for.
+void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::switches& sw,
+                   const pdd::pslg& in, const pdd::triangle::triangulation& t) {
   pdd::triangle_format fmt;
   fmt.first_index = sw.zero_based ? 0 : 1;
   fmt.markers = !sw.no_boundary_markers;
@@ -123,6 +117,27 @@ int run(const cli_options& o) {
     if (!sw.quiet) std::printf("Writing %s.\n", f.neigh.c_str());
     pdd::write_neigh(f.neigh, t.neighbors, fmt);
   }
+}
+
+int run(const cli_options& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  pdd::triangle::switches sw = read_switches(o);
+  pdd::triangle::switches probe = sw;
+  const std::string base = pdd::triangle::make_file_names(o.input, probe).base; // sets p
+  const bool node_read = std::filesystem::exists(base + ".node");
+  const pdd::triangle::file_names f = pdd::triangle::make_file_names(o.input, sw, node_read);
+  if (!sw.quiet) std::printf("Opening %s.\n", f.poly.c_str());
+  const pdd::pslg in = pdd::read_poly(f.poly);
+  if (!sw.quiet) std::printf("Meshing with pdd's decoupled pipeline.\n");
+  const auto tm = std::chrono::steady_clock::now();
+  const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
+  if (!sw.quiet) {
+    std::size_t n = 0;
+    for (const auto& r : t.runs)
+      n += r.subdomains;
+    std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms_since(tm), n);
+  }
+  write_outputs(f, sw, in, t);
   if (!sw.quiet) {
     std::printf("\nTotal running milliseconds:  %.0f\n", ms_since(t0));
     print_statistics(in, t);
@@ -134,6 +149,28 @@ int run(const cli_options& o) {
 int fail(const char* what, const std::exception& e, int code) {
   std::fprintf(stderr, "pdd-triangle: %s: %s\n", what, e.what());
   return code;
+}
+
+/// run(o), with every error reported on stderr and mapped to its exit code.
+int run_reporting_errors(const cli_options& o) {
+  try {
+    return run(o);
+  } catch (const pdd::triangle::switch_error& e) {
+    return fail("error", e, usage);
+  } catch (const pdd::input_error& e) {
+    return fail("error", e, bad_input);
+  } catch (const pdd::geometry_error& e) {
+    std::fprintf(stderr, "pdd-triangle: error: %s: %s\n", o.input.c_str(), e.what());
+    return bad_input;
+  } catch (const pdd::internal_error& e) {
+    return fail("internal error", e, internal);
+  } catch (const pdd::meshing_error& e) {
+    return fail("internal error", e, internal);
+  } catch (const pdd::error& e) { // limits, decomposition, files that cannot be read or written
+    return fail("error", e, bad_input);
+  } catch (const std::exception& e) {
+    return fail("internal error", e, internal);
+  }
 }
 
 } // namespace
@@ -168,22 +205,5 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? ok : usage;
   }
-  try {
-    return run(o);
-  } catch (const pdd::triangle::switch_error& e) {
-    return fail("error", e, usage);
-  } catch (const pdd::input_error& e) {
-    return fail("error", e, bad_input);
-  } catch (const pdd::geometry_error& e) {
-    std::fprintf(stderr, "pdd-triangle: error: %s: %s\n", o.input.c_str(), e.what());
-    return bad_input;
-  } catch (const pdd::internal_error& e) {
-    return fail("internal error", e, internal);
-  } catch (const pdd::meshing_error& e) {
-    return fail("internal error", e, internal);
-  } catch (const pdd::error& e) { // limits, decomposition, files that cannot be read or written
-    return fail("error", e, bad_input);
-  } catch (const std::exception& e) {
-    return fail("internal error", e, internal);
-  }
+  return run_reporting_errors(o);
 }
