@@ -24,6 +24,26 @@ inline constexpr int interface_marker = std::numeric_limits<int>::min();
 
 namespace pdd::detail {
 
+/// Adds every loop vertex of sd to g once, in loop order; local maps pool ids to g's ids.
+/// Returns the number of loop edges (space for as many segments is reserved in g).
+inline std::size_t add_loop_vertices(const decomposition& d, const subdomain& sd, pslg& g,
+                                     std::unordered_map<index_t, index_t>& local) {
+  std::size_t total = 0;
+  for (const auto& loop : sd.loops)
+    total += loop.size();
+  local.reserve(total);
+  g.vertices.reserve(total);
+  g.vertex_markers.reserve(total);
+  g.segments.reserve(total);
+  for (const auto& loop : sd.loops)
+    for (const index_t v : loop) {
+      PDD_ASSERT(v < d.vertices.size());
+      if (local.emplace(v, static_cast<index_t>(g.vertices.size())).second)
+        g.add_vertex(d.vertices[v], v < d.vertex_markers.size() ? d.vertex_markers[v] : 0);
+    }
+  return total;
+}
+
 /// Builds subdomain s of d as a pslg into g: first every loop vertex once (in loop order;
 /// a vertex repeated in the loops is added once), then, per loop edge a -> b, the points
 /// `on_interface(edge, a, b, g)` appends (in the order a -> b; it returns the path edge id, or
@@ -35,21 +55,8 @@ template <class OnInterface>
 void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterface&& on_interface,
                           std::vector<index_t>& segment_path_edge, int interface_mark) {
   const subdomain& sd = d.subdomains[s];
-  std::size_t total = 0;
-  for (const auto& loop : sd.loops)
-    total += loop.size();
   std::unordered_map<index_t, index_t> local;
-  local.reserve(total);
-  g.vertices.reserve(total);
-  g.vertex_markers.reserve(total);
-  g.segments.reserve(total);
-  segment_path_edge.reserve(total);
-  for (const auto& loop : sd.loops)
-    for (const index_t v : loop) {
-      PDD_ASSERT(v < d.vertices.size());
-      if (local.emplace(v, static_cast<index_t>(g.vertices.size())).second)
-        g.add_vertex(d.vertices[v], v < d.vertex_markers.size() ? d.vertex_markers[v] : 0);
-    }
+  segment_path_edge.reserve(add_loop_vertices(d, sd, g, local));
   std::size_t edge = 0;
   for (std::size_t l = 0; l < sd.loops.size(); ++l) {
     const auto& loop = sd.loops[l];
