@@ -24,6 +24,24 @@
 
 namespace pdd::detail {
 
+/// True if the loop edges ab and ce of a subdomain clash: the same edge twice, two edges
+/// with a common endpoint that fold onto each other (collinear, acute), or disjoint-ended
+/// edges that intersect. Exact predicates.
+inline bool loop_edges_clash(const decomposition& d, index_t a, index_t b, index_t c, index_t e) {
+  const epick::Point_2 pa(d.vertices[a].x, d.vertices[a].y), pb(d.vertices[b].x, d.vertices[b].y);
+  const epick::Point_2 pc(d.vertices[c].x, d.vertices[c].y), pe(d.vertices[e].x, d.vertices[e].y);
+  const int shared = (a == c) + (a == e) + (b == c) + (b == e);
+  if (shared >= 2) return true; // the same edge twice
+  if (shared == 1) {
+    const index_t v = (a == c || a == e) ? a : b;
+    const epick::Point_2 pv(d.vertices[v].x, d.vertices[v].y);
+    const epick::Point_2& p = v == a ? pb : pa;
+    const epick::Point_2& q = (v == c) ? pe : pc;
+    return CGAL::collinear(pv, p, q) && CGAL::angle(p, pv, q) == CGAL::ACUTE;
+  }
+  return CGAL::do_intersect(epick::Segment_2(pa, pb), epick::Segment_2(pc, pe));
+}
+
 /// Segment intersections inside one subdomain (all its loops together): two edges may only
 /// share an endpoint, and consecutive edges may not fold back onto each other.
 inline void check_subdomain_simple(const decomposition& d, std::size_t s,
@@ -46,22 +64,7 @@ inline void check_subdomain_simple(const decomposition& d, std::size_t s,
   CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const box& x, const box& y) {
     const auto [a, b] = edges[x.info()];
     const auto [c, e] = edges[y.info()];
-    const epick::Point_2 pa(d.vertices[a].x, d.vertices[a].y), pb(d.vertices[b].x, d.vertices[b].y);
-    const epick::Point_2 pc(d.vertices[c].x, d.vertices[c].y), pe(d.vertices[e].x, d.vertices[e].y);
-    bool wrong = false;
-    const int shared = (a == c) + (a == e) + (b == c) + (b == e);
-    if (shared >= 2) {
-      wrong = true; // the same edge twice
-    } else if (shared == 1) {
-      const index_t v = (a == c || a == e) ? a : b;
-      const epick::Point_2 pv(d.vertices[v].x, d.vertices[v].y);
-      const epick::Point_2& p = v == a ? pb : pa;
-      const epick::Point_2& q = (v == c) ? pe : pc;
-      wrong = CGAL::collinear(pv, p, q) && CGAL::angle(p, pv, q) == CGAL::ACUTE;
-    } else {
-      wrong = CGAL::do_intersect(epick::Segment_2(pa, pb), epick::Segment_2(pc, pe));
-    }
-    if (wrong && bad++ == 0)
+    if (loop_edges_clash(d, a, b, c, e) && bad++ == 0)
       first = "edges (" + std::to_string(a) + ", " + std::to_string(b) + ") and (" +
               std::to_string(c) + ", " + std::to_string(e) + ")";
   });
