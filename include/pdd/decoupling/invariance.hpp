@@ -5,6 +5,7 @@
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/decoupling/detail/invariance.hpp>
 #include <pdd/errors.hpp>
 
 #include <algorithm>
@@ -31,32 +32,8 @@ inline std::vector<index_t> split_interface_pieces(const subdomain_input& in,
   if (m.vertices.size() < n)
     throw decoupling_error("the mesh has fewer vertices than its input (" +
                            std::to_string(m.vertices.size()) + " < " + std::to_string(n) + ")");
-  const auto key = [](index_t a, index_t b) {
-    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-  };
-  std::vector<std::pair<std::uint64_t, index_t>> pieces; // (edge key, segment index)
-  for (index_t s = 0; s < g.segments.size(); ++s) {
-    if (in.segment_path_edge[s] == no_index) continue;
-    const segment& sg = g.segments[s];
-    for (const index_t v : {sg.a, sg.b})
-      if (!(m.vertices[v] == g.vertices[v]))
-        throw decoupling_error("the kernel moved interface vertex " + std::to_string(v));
-    pieces.emplace_back(key(sg.a, sg.b), s);
-  }
-  std::sort(pieces.begin(), pieces.end());
-  std::vector<std::uint8_t> ok(pieces.size(), 0);
-  const auto mark = [&](index_t a, index_t b) {
-    if (a >= n || b >= n) return;
-    const auto it = std::lower_bound(pieces.begin(), pieces.end(),
-                                     std::pair<std::uint64_t, index_t>{key(a, b), 0});
-    for (auto j = it; j != pieces.end() && j->first == key(a, b); ++j)
-      ok[j - pieces.begin()] = 1;
-  };
-  for (const auto& t : m.triangles) {
-    mark(t[0], t[1]);
-    mark(t[1], t[2]);
-    mark(t[2], t[0]);
-  }
+  const auto pieces = detail::interface_pieces_by_edge(in, m);
+  const std::vector<std::uint8_t> ok = detail::pieces_in_mesh(pieces, m, n);
   std::vector<index_t> failed;
   for (std::size_t j = 0; j < pieces.size(); ++j)
     if (!ok[j] ||
