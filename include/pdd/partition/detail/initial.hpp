@@ -33,22 +33,27 @@ inline std::vector<std::uint8_t> bfs_bisection(const ml_graph& g, std::size_t se
   return part;
 }
 
-/// Greedy graph growing: part 1 starts as {seed} and repeatedly takes the frontier vertex whose
-/// move raises the cut least, skipping vertices that would push it over max_weight, until it
-/// reaches target. A disconnected graph continues from its lowest vertex outside part 1.
-inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t seed, double target,
-                                                double max_weight) {
-  const std::size_t n = boost::num_vertices(g);
-  std::vector<std::uint8_t> part(n, 0);
-  std::vector<double> priority(n, 0.0); // (weight to part 1) - (weight to part 0)
-  std::vector<char> queued(n, 0);
-  for (std::size_t v = 0; v < n; ++v)
-    for (const auto e : boost::make_iterator_range(boost::out_edges(v, g)))
-      priority[v] -= g[e].weight;
+/// The state of grow_bisection: part 1 so far, its weight, and the frontier ordered by
+/// priority = (weight to part 1) - (weight to part 0).
+struct growing_part {
+  const ml_graph& g;
+  std::vector<std::uint8_t> part;
+  std::vector<double> priority;
+  std::vector<char> queued;
   std::set<std::pair<double, std::size_t>, fm_gain_order> frontier;
   double w1 = 0.0;
-  std::size_t count = 0, next_outside = 0;
-  auto add = [&](std::size_t v) {
+  std::size_t count = 0;
+
+  explicit growing_part(const ml_graph& graph)
+      : g(graph), part(boost::num_vertices(graph), 0), priority(part.size(), 0.0),
+        queued(part.size(), 0) {
+    for (std::size_t v = 0; v < part.size(); ++v)
+      for (const auto e : boost::make_iterator_range(boost::out_edges(v, g)))
+        priority[v] -= g[e].weight;
+  }
+
+  /// Moves v to part 1 and updates its neighbours' priorities.
+  void add(std::size_t v) {
     if (queued[v]) frontier.erase({priority[v], v});
     part[v] = 1;
     w1 += g[v].weight;
@@ -61,21 +66,31 @@ inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t s
       queued[t] = 1;
       frontier.insert({priority[t], t});
     }
-  };
-  add(seed);
-  while (w1 < target && count + 1 < n) {
+  }
+};
+
+/// Greedy graph growing: part 1 starts as {seed} and repeatedly takes the frontier vertex whose
+/// move raises the cut least, skipping vertices that would push it over max_weight, until it
+/// reaches target. A disconnected graph continues from its lowest vertex outside part 1.
+inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t seed, double target,
+                                                double max_weight) {
+  const std::size_t n = boost::num_vertices(g);
+  growing_part gp(g);
+  std::size_t next_outside = 0;
+  gp.add(seed);
+  while (gp.w1 < target && gp.count + 1 < n) {
     std::size_t pick = n;
-    for (const auto& [p, v] : frontier)
-      if (w1 + g[v].weight <= max_weight) {
+    for (const auto& [p, v] : gp.frontier)
+      if (gp.w1 + g[v].weight <= max_weight) {
         pick = v;
         break;
       }
-    while (frontier.empty() && pick == n && next_outside < n)
-      if (!part[next_outside++]) pick = next_outside - 1;
+    while (gp.frontier.empty() && pick == n && next_outside < n)
+      if (!gp.part[next_outside++]) pick = next_outside - 1;
     if (pick == n) break;
-    add(pick);
+    gp.add(pick);
   }
-  return part;
+  return std::move(gp.part);
 }
 
 /// The best FM-refined bisection of (small) g among `tries` grown ones: try 0 grows by BFS
