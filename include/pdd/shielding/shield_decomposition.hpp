@@ -156,7 +156,7 @@ shield_decomposition(decomposition& d, double area_bound, const E& executor = {}
         t.apex_vertex = loop[i];
         t.b_vertex = ip + 1;
         t.c_vertex = ip;
-        if (sd.area > 0.0) sd.area -= triangle_area(a, nb, pb);
+        if (sd.area > 0.0) sd.area -= detail::triangle_area(a, nb, pb);
         out[s].triangles.push_back(t);
       }
       sd.loops[l] = std::move(nl);
