@@ -37,6 +37,7 @@
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/feature_gap.hpp>
 #include <pdd/geometry/lfs.hpp>
+#include <pdd/geometry/loop_structure.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/geometry/properties.hpp>
