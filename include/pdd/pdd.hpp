@@ -82,6 +82,7 @@
 #include <pdd/shielding/shield_decomposition.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
+#include <pdd/shielding/shielded_domain.hpp>
 
 // level 5: decoupling
 #include <pdd/decoupling/decouple.hpp>
