@@ -25,15 +25,15 @@
 //
 // benchmarks/run_madd.sh runs the table in benchmarks/results/madd.md.
 #include <pdd/core/triangle_measures.hpp>
-#include <pdd/madd/detail/region.hpp>
-#include <pdd/pipeline/system.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/madd/decompose.hpp>
+#include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
 #include <pdd/partition/default_partitioner.hpp>
+#include <pdd/pipeline/system.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #ifdef PDD_HAVE_METIS
@@ -303,58 +303,69 @@ std::size_t corner_of(const tri_list& tris, index_t t, index_t v) {
   return 3 * static_cast<std::size_t>(t) + (tr[0] == v ? 0 : tr[1] == v ? 1 : 2);
 }
 
-/// Corners, areas and interface lengths of a triangle partition: the corners of one part at a
-/// vertex are the triangle corners joined across edges inside the part.
-partition_measures measure_metis(const pdd::triangle_mesh& m, const mesh_edges& me,
-                                 const std::vector<idx_t>& part, std::size_t n) {
+/// The triangle corners of a partition joined across edges inside a part, the number of
+/// interface and boundary edges at every vertex, the interface edges at every corner.
+struct partition_corners {
+  corner_sets cs;
+  std::vector<int> degree;      ///< per vertex: interface and boundary edges
+  std::vector<int> iface_sides; ///< per corner: interface edges of its triangle at it
+};
+
+/// Joins corners across the inner edges within a part and counts interface and boundary edges;
+/// adds each interface edge's length to r.interface_len of both its parts.
+partition_corners join_partition_corners(const pdd::triangle_mesh& m, const mesh_edges& me,
+                                         const std::vector<idx_t>& part, partition_measures& r) {
   const tri_list& tris = m.triangles;
-  corner_sets cs(3 * tris.size());
-  std::vector<int> degree(m.vertices.size(), 0);
-  std::vector<int> sides(3 * tris.size(), 0), iface_sides(3 * tris.size(), 0);
-  partition_measures r;
-  r.interface_len.assign(n, 0.0);
-  r.part_area.assign(n, 0.0);
-  auto side = [&](index_t t, index_t a, index_t b, bool iface) {
-    for (const index_t v : {a, b}) {
-      ++sides[corner_of(tris, t, v)];
-      iface_sides[corner_of(tris, t, v)] += iface ? 1 : 0;
-    }
-  };
+  partition_corners pc{corner_sets(3 * tris.size()), std::vector<int>(m.vertices.size(), 0),
+                       std::vector<int>(3 * tris.size(), 0)};
   for (const auto& [t, u, a, b] : me.inner) {
     if (part[t] == part[u]) {
-      cs.unite(corner_of(tris, t, a), corner_of(tris, u, a));
-      cs.unite(corner_of(tris, t, b), corner_of(tris, u, b));
+      pc.cs.unite(corner_of(tris, t, a), corner_of(tris, u, a));
+      pc.cs.unite(corner_of(tris, t, b), corner_of(tris, u, b));
       continue;
     }
-    ++degree[a];
-    ++degree[b];
-    side(t, a, b, true);
-    side(u, a, b, true);
+    ++pc.degree[a];
+    ++pc.degree[b];
+    for (const index_t v : {a, b}) {
+      ++pc.iface_sides[corner_of(tris, t, v)];
+      ++pc.iface_sides[corner_of(tris, u, v)];
+    }
     const double len = pdd::detail::distance(m.vertices[a], m.vertices[b]);
     r.interface_len[part[t]] += len;
     r.interface_len[part[u]] += len;
   }
   for (const auto& [t, a, b] : me.boundary) {
-    ++degree[a];
-    ++degree[b];
-    side(t, a, b, false);
+    ++pc.degree[a];
+    ++pc.degree[b];
   }
+  return pc;
+}
+
+/// Corners, areas and interface lengths of a triangle partition: the corners of one part at a
+/// vertex are the triangle corners joined across edges inside the part.
+partition_measures measure_metis(const pdd::triangle_mesh& m, const mesh_edges& me,
+                                 const std::vector<idx_t>& part, std::size_t n) {
+  const tri_list& tris = m.triangles;
+  partition_measures r;
+  r.interface_len.assign(n, 0.0);
+  r.part_area.assign(n, 0.0);
+  partition_corners pc = join_partition_corners(m, me, part, r);
   std::vector<double> angle(3 * tris.size(), 0.0);
   std::vector<int> set_iface(3 * tris.size(), 0);
   for (std::size_t t = 0; t < tris.size(); ++t) {
     r.part_area[part[t]] += tri_area(m, tris[t]);
     for (int k = 0; k < 3; ++k) {
-      const std::size_t c = 3 * t + k, s = cs.find(c);
+      const std::size_t c = 3 * t + k, s = pc.cs.find(c);
       angle[s] += pdd::detail::angle_deg(m.vertices[tris[t][k]], m.vertices[tris[t][(k + 1) % 3]],
                                          m.vertices[tris[t][(k + 2) % 3]]);
-      set_iface[s] += iface_sides[c];
+      set_iface[s] += pc.iface_sides[c];
     }
   }
   for (std::size_t t = 0; t < tris.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const std::size_t c = 3 * t + k;
-      if (cs.find(c) == c && set_iface[c] > 0)
-        r.corners.push_back({angle[c], degree[tris[t][k]] >= 3});
+      if (pc.cs.find(c) == c && set_iface[c] > 0)
+        r.corners.push_back({angle[c], pc.degree[tris[t][k]] >= 3});
     }
   return r;
 }
