@@ -160,8 +160,8 @@ TEST(MaddDiscretisation, SquareRefinement) {
   double area = 0.0;
   for (const auto& f : tr.faces) {
     std::vector<point> p{tr.z[f.v[0]].p, tr.z[f.v[1]].p, tr.z[f.v[2]].p};
-    EXPECT_GT(signed_area(p), 0.0);
-    area += signed_area(p);
+    EXPECT_GT(polygon_signed_area(p), 0.0);
+    area += polygon_signed_area(p);
   }
   EXPECT_NEAR(area, 1.0, 1e-14);
   std::size_t boundary = 0;
@@ -191,7 +191,7 @@ TEST(MaddDiscretisation, EmptyDiametralCircles) {
     }
     double area = 0.0;
     for (const auto& f : tr.faces)
-      area += signed_area({tr.z[f.v[0]].p, tr.z[f.v[1]].p, tr.z[f.v[2]].p});
+      area += polygon_signed_area({tr.z[f.v[0]].p, tr.z[f.v[1]].p, tr.z[f.v[2]].p});
     EXPECT_NEAR(area, r.area, 1e-12);
   }
 }
@@ -320,7 +320,7 @@ TEST(MaddSplit, SeparatorInsertion) {
     std::size_t separator_edges = 0;
     for (const auto& child : res.children) {
       ASSERT_EQ(child.loops.size(), 1u);
-      EXPECT_GT(signed_area(child.loops[0].points), 0.0);
+      EXPECT_GT(polygon_signed_area(child.loops[0].points), 0.0);
       for (std::size_t i = 0; i < child.loops[0].size(); ++i) {
         const point p = child.loops[0].points[i];
         const bool on_boundary = region_vertices.count(p) || kept.count(p);
