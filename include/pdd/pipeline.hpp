@@ -91,12 +91,12 @@ public:
     const bool bounded = options_.sizing || std::isfinite(options_.criteria.max_area);
     stats_.subdomains =
         options_.subdomains != 0 ? options_.subdomains
-        : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads, options_)
+        : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads, options_.planning)
                   : 1;
     // the graded method (Algorithm 7.1 + graded path) where no shields are needed (input
     // angles >= 60 deg, Ruppert's condition) and k is neither scaled nor overridden
-    graded_plan_ = options_.sizing && stats_.subdomains > 1 && !(options_.k_override > 0.0) &&
-                   options_.k_scale == 1.0 && min_domain_angle_deg(domain_) >= 60.0;
+    graded_plan_ = options_.sizing && stats_.subdomains > 1 && !(options_.decoupling.k_override > 0.0) &&
+                   options_.decoupling.k_scale == 1.0 && min_domain_angle_deg(domain_) >= 60.0;
   }
 
   /// N, the number of subdomains this pipeline uses.
@@ -161,7 +161,8 @@ public:
         shields = shield_decomposition(decomposition_, decoupling_criteria().max_area, executor_,
                                        shield_length_cap(unshielded_k()));
       if (!(options_.sizing && try_graded_path(shields.empty()))) {
-        decoupling_options dopt{decoupling_criteria(), options_.k_override, options_.k_scale};
+        decoupling_options dopt{decoupling_criteria(), options_.decoupling.k_override,
+                                options_.decoupling.k_scale};
         decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
       }
       decoupled_decomposition_.shields.resize(shields.size());
@@ -174,7 +175,7 @@ public:
       stats_.split_points = decoupled_decomposition_.num_split_points();
       if (options_.subdomains == 0 &&
           static_cast<double>(stats_.split_points) >
-              options_.max_split_point_fraction * stats_.estimated_triangles)
+              options_.planning.max_split_point_fraction * stats_.estimated_triangles)
         fall_back_to_whole_domain();
     }
     stats_.timings.decouple = seconds_since(t0);
@@ -201,7 +202,7 @@ public:
     } else {
       meshing_statistics ms = mesh_subdomains(
           decoupled_decomposition_,
-          {options_.criteria, options_.max_repairs, options_.sizing, gradation_.expected_triangles},
+          {options_.criteria, options_.decoupling.max_repairs, options_.sizing, gradation_.expected_triangles},
           mesher_, executor_, timed);
       stats_.triangles = ms.triangles();
       stats_.interface_splits = ms.interface_splits;
@@ -262,7 +263,7 @@ private:
     gradation_options go = options_.gradation;
     go.max_area = options_.criteria.max_area;
     go.mean_area_fraction = mean_triangle_area_fraction;
-    if (options_.subdomains == 0) go.max_subdomain_triangles = options_.target_subdomain_triangles;
+    if (options_.subdomains == 0) go.max_subdomain_triangles = options_.planning.target_subdomain_triangles;
     go.min_subdomains = stats_.subdomains;
     go.max_subdomains = std::max(go.max_subdomains, go.min_subdomains);
     decomposition_ = gradation_controlled_decompose(domain_, options_.sizing, go, mo, partitioner_,
@@ -278,7 +279,7 @@ private:
   /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i through
   /// pdd::shield_length_cap, see pdd::shield_decomposition).
   double unshielded_k() const {
-    if (options_.k_override > 0.0) return options_.k_override;
+    if (options_.decoupling.k_override > 0.0) return options_.decoupling.k_override;
     const std::vector<double> lfs = detail::subdomain_lfs(decomposition_, executor_);
     double shortest = std::numeric_limits<double>::infinity();
     for (const subdomain& sd : decomposition_.subdomains)
@@ -289,8 +290,9 @@ private:
             const point b = decomposition_.vertices[sd.loops[l][(i + 1) % sd.loops[l].size()]];
             shortest = std::min(shortest, std::hypot(b.x - a.x, b.y - a.y));
           }
-    return options_.k_scale * decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()),
-                                                   shortest, decoupling_criteria());
+    return options_.decoupling.k_scale *
+           decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()), shortest,
+                                decoupling_criteria());
   }
 
   /// Builds the graded path into decoupled_decomposition_ (k_i lowered where relation 7.1
@@ -301,8 +303,8 @@ private:
       stats_.graded_fallback = "small input angles are shielded (the graded path has no shields)";
       return false;
     }
-    if (options_.k_override > 0.0 || options_.k_scale != 1.0) {
-      stats_.graded_fallback = "k_override or k_scale set";
+    if (options_.decoupling.k_override > 0.0 || options_.decoupling.k_scale != 1.0) {
+      stats_.graded_fallback = "decoupling.k_override or decoupling.k_scale set";
       return false;
     }
     std::vector<double> lo;

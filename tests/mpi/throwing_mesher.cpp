@@ -65,7 +65,7 @@ int run(char** argv, int rank) {
   pdd::mpi::vtu_directory_sink files(MPI_COMM_WORLD, argv[4]);
   try {
     const auto st = pdd::mpi::mesh_subdomains(
-        MPI_COMM_WORLD, dd, {o.criteria, o.max_repairs, o.sizing}, mesher, 2, files);
+        MPI_COMM_WORLD, dd, {o.criteria, o.decoupling.max_repairs, o.sizing}, mesher, 2, files);
     return consistent(st, rank) ? 0 : 1;
   } catch (const pdd::meshing_error&) {
     files.remove_written();

@@ -111,12 +111,12 @@ TEST(Generate, SinkOverloadMatchesMergedMesh) {
 
 TEST(Generate, AutomaticSubdomains) {
   pdd::generate_options o;
-  EXPECT_EQ(pdd::automatic_subdomains(INFINITY, 8, o), 1u); // no area bound
-  EXPECT_EQ(pdd::automatic_subdomains(30000, 1, o), 1u);    // small: the kernel alone
-  EXPECT_EQ(pdd::automatic_subdomains(6e6, 1, o), 100u);    // E / 60K
-  EXPECT_EQ(pdd::automatic_subdomains(6e6, 64, o), 256u);   // >= 4 per thread
-  EXPECT_EQ(pdd::automatic_subdomains(40000, 4, o), 8u);    // capped at E / 5K
-  EXPECT_EQ(pdd::automatic_subdomains(8000, 4, o), 1u);
+  EXPECT_EQ(pdd::automatic_subdomains(INFINITY, 8, o.planning), 1u); // no area bound
+  EXPECT_EQ(pdd::automatic_subdomains(30000, 1, o.planning), 1u);    // small: the kernel alone
+  EXPECT_EQ(pdd::automatic_subdomains(6e6, 1, o.planning), 100u);    // E / 60K
+  EXPECT_EQ(pdd::automatic_subdomains(6e6, 64, o.planning), 256u);   // >= 4 per thread
+  EXPECT_EQ(pdd::automatic_subdomains(40000, 4, o.planning), 8u);    // capped at E / 5K
+  EXPECT_EQ(pdd::automatic_subdomains(8000, 4, o.planning), 1u);
   // The estimate: area / (0.656 A).
   pdd::mesh_criteria c;
   c.max_area = 1e-3;
@@ -126,7 +126,7 @@ TEST(Generate, AutomaticSubdomains) {
   o.threads = 2;
   pdd::pipeline pl(pdd::key_domain(), o);
   const double e = pl.statistics().estimated_triangles;
-  EXPECT_EQ(pl.subdomains(), pdd::automatic_subdomains(e, pl.statistics().threads, o));
+  EXPECT_EQ(pl.subdomains(), pdd::automatic_subdomains(e, pl.statistics().threads, o.planning));
   const auto mono = pdd::cgal::mesher{}.mesh(pdd::key_domain(), o.criteria, pdd::uniform_sizing{});
   EXPECT_LT(std::abs(e / static_cast<double>(mono.mesh.triangles.size()) - 1.0), 0.05);
 }

@@ -261,12 +261,12 @@ TEST(GradedPath, KPerSubdomainOnGradationControlledDecomposition) {
   EXPECT_LT(steep.statistics.k_ratio_max, std::numbers::sqrt3);
   EXPECT_EQ(steep.statistics.interface_splits, 0u);
   expect_graded_verified(steep.mesh, d, o, "steep field");
-  o.k_scale = std::nextafter(1.0, 0.0);
+  o.decoupling.k_scale = std::nextafter(1.0, 0.0);
   const pdd::generate_result interim = pdd::generate(d, o);
   EXPECT_FALSE(interim.statistics.graded_path);
   EXPECT_FALSE(interim.statistics.graded_fallback.empty());
   expect_graded_verified(interim.mesh, d, o, "interim path");
-  o.k_scale = 1.0;
+  o.decoupling.k_scale = 1.0;
   o.subdomains = 1;
   const auto mono = static_cast<double>(pdd::generate(d, o).mesh.triangles.size());
   const auto over = [&](const pdd::generate_result& r) {

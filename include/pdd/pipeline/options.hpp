@@ -13,6 +13,33 @@
 
 namespace pdd {
 
+/// The automatic number of subdomains (pdd::automatic_subdomains) and the fallback to the
+/// whole domain; used only when generate_options::subdomains is 0.
+struct planning_options {
+  /// The number of triangles aimed at per subdomain.
+  double target_subdomain_triangles = 60000.0;
+  /// At least this many subdomains per thread when running on several threads.
+  unsigned min_subdomains_per_thread = 4;
+  /// No subdomain is planned below this many triangles.
+  double min_subdomain_triangles = 5000.0;
+  /// Fall back to N = 1 when the decoupling path has more split points than this fraction of
+  /// the estimated triangles. That happens when k is held down by a small input feature
+  /// (k <= lfs_min): the uniform method then refines every separator to that scale and would
+  /// over-refine the mesh (dissertation 6.3; the graded method of ch. 7 is the remedy).
+  double max_split_point_fraction = 0.05;
+};
+
+/// The decoupling path's own knobs (the criteria and the sizing are generate_options'): k of
+/// Theorem 15 and the invariance repairs of the meshing stage.
+struct decoupling_path_options {
+  /// Multiplies the decoupling parameter k of Theorem 15 (in (0, 1] keeps the guarantee).
+  double k_scale = 1.0;
+  /// > 0: use this k instead (experiments; see decoupling_options::k_override).
+  double k_override = 0.0;
+  /// Invariance repair rounds (see mesh_subdomains; the theory says none are ever needed).
+  unsigned max_repairs = 3;
+};
+
 /// Options of pdd::generate and pdd::pipeline.
 struct generate_options {
   /// Quality and uniform size bounds of every triangle.
@@ -45,12 +72,8 @@ struct generate_options {
   /// must stay infinite (the pipeline plans N itself); `min_separator_angle_deg` (Phi0) must
   /// be >= 60.
   madd_options madd;
-  /// Multiplies the decoupling parameter k of Theorem 15 (in (0, 1] keeps the guarantee).
-  double k_scale = 1.0;
-  /// > 0: use this k instead (experiments; see decoupling_options::k_override).
-  double k_override = 0.0;
-  /// Invariance repair rounds (see mesh_subdomains; the theory says none are ever needed).
-  unsigned max_repairs = 3;
+  /// k of the decoupling path and the invariance repairs.
+  decoupling_path_options decoupling;
   /// Refuse (pdd::limit_error) an area bound whose mesh would not fit in physical memory
   /// (when max_triangles is 0).
   bool check_memory = true;
@@ -58,18 +81,8 @@ struct generate_options {
   /// (pdd::estimate_mesh_size: the area bound and the local feature size) exceeds this. 0:
   /// the limit is what fits in physical memory with the sink (check_memory).
   std::size_t max_triangles = 0;
-  /// Automatic N: the number of triangles aimed at per subdomain (see automatic_subdomains).
-  double target_subdomain_triangles = 60000.0;
-  /// Automatic N: at least this many subdomains per thread when running on several threads.
-  unsigned min_subdomains_per_thread = 4;
-  /// Automatic N: no subdomain is planned below this many triangles.
-  double min_subdomain_triangles = 5000.0;
-  /// Automatic N: fall back to N = 1 when the decoupling path has more split points than this
-  /// fraction of the estimated triangles. That happens when k is held down by a small input
-  /// feature (k <= lfs_min): the uniform method then refines every separator to that scale
-  /// and would over-refine the mesh (dissertation 6.3; the graded method of ch. 7 is the
-  /// remedy). A requested N (subdomains > 0) is always used.
-  double max_split_point_fraction = 0.05;
+  /// Automatic N (subdomains == 0); a requested N is always used.
+  planning_options planning;
 };
 
 /// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own

@@ -39,7 +39,7 @@ inline double estimate_triangles(double domain_area, const mesh_criteria& criter
 /// (5K). The defaults are a first choice to be tuned by benchmarks (benchmarks/results).
 /// Complexity O(1).
 inline std::size_t automatic_subdomains(double estimated_triangles, unsigned threads,
-                                        const generate_options& o) {
+                                        const planning_options& o) {
   if (!std::isfinite(estimated_triangles) || estimated_triangles <= 0.0) return 1;
   double n = std::ceil(estimated_triangles / std::max(1.0, o.target_subdomain_triangles));
   if (threads > 1) n = std::max(n, static_cast<double>(o.min_subdomains_per_thread) * threads);

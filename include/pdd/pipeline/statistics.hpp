@@ -38,7 +38,7 @@ struct generate_statistics {
   std::size_t remeshed_subdomains = 0;
   std::size_t repair_rounds = 0;
   /// The automatic plan decomposed the domain but fell back to N = 1 because the decoupling
-  /// path was too fine (see generate_options::max_split_point_fraction).
+  /// path was too fine (see planning_options::max_split_point_fraction).
   bool monolithic_fallback = false;
   std::size_t triangles = 0; ///< triangles delivered
   std::size_t vertices = 0;  ///< vertices of the merged mesh (generate without a sink only)
@@ -47,8 +47,8 @@ struct generate_statistics {
   std::vector<subdomain_report> per_subdomain;
   /// With a sizing field and N > 1: true when the graded decoupling path (decouple_graded,
   /// one k_i per subdomain) was used, false when relation 7.1 failed somewhere (or shields,
-  /// k_scale or k_override were in play) and the interim uniform path with k from the field's
-  /// minimum was used instead (graded_fallback says why).
+  /// decoupling.k_scale or decoupling.k_override were in play) and the interim uniform path with k
+  /// from the field's minimum was used instead (graded_fallback says why).
   bool graded_path = false;
   std::string graded_fallback;
   std::vector<double> subdomain_k; ///< k_i per subdomain (graded path)
