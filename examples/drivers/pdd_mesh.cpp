@@ -328,28 +328,8 @@ void print_summary(const cli_options& o, const mesh_run& r) {
   if (!o.stats.empty()) std::printf("pdd-mesh: wrote %s\n", o.stats.c_str());
 }
 
-int run(const cli_options& o) {
-  const auto t_start = std::chrono::steady_clock::now();
-  progress bar(!o.quiet && pdd::stderr_is_terminal());
-  mesh_run r;
-  bar.stage("reading input");
-  read_input(o, r);
-  bar.stage("decomposing and meshing");
-  const bool native = o.kernel == "native";
-  if (native)
-    generate_mesh<pdd::native::mesher>(o, r, bar);
-  else
-    generate_mesh<pdd::cgal::mesher>(o, r, bar);
-  measure_and_verify(o, r, bar); // verification time is part of the total
-  if (o.compare_monolithic) {
-    if (native)
-      compare_monolithic<pdd::native::mesher>(r, bar);
-    else
-      compare_monolithic<pdd::cgal::mesher>(r, bar);
-  }
-
-  bar.stage("writing");
-  const auto t_write0 = std::chrono::steady_clock::now();
+/// Writes the mesh, its SVG picture and its angle histogram where the options ask for them.
+void write_outputs(const cli_options& o, const mesh_run& r) {
   if (r.mesh && !o.output.empty()) pdd::write_mesh(o.output, *r.mesh);
   if (r.mesh && !o.svg.empty()) {
     pdd::svg_options so;
@@ -360,6 +340,43 @@ int run(const cli_options& o) {
     pdd::write_svg(o.svg, *r.mesh, so);
   }
   if (r.mesh && !o.svg_histogram.empty()) pdd::write_angle_histogram_svg(o.svg_histogram, *r.mesh);
+}
+
+/// The verification's outcome: its messages on stderr and verification_failed when it failed.
+int report_verification(const cli_options& o, const mesh_run& r) {
+  if (r.report && !r.report->ok()) {
+    std::fprintf(stderr, "pdd-mesh: verification FAILED\n");
+    for (const auto& m : r.report->messages)
+      std::fprintf(stderr, "  %s\n", m.c_str());
+    return verification_failed;
+  }
+  if (r.report && !o.quiet) std::printf("pdd-mesh: verification passed\n");
+  return ok;
+}
+
+/// Meshes with kernel M, verifies (the verification's time is part of the total) and, when
+/// asked, meshes the whole domain monolithically with the same kernel for comparison.
+template <class M>
+void mesh_with_kernel(const cli_options& o, mesh_run& r, progress& bar) {
+  generate_mesh<M>(o, r, bar);
+  measure_and_verify(o, r, bar);
+  if (o.compare_monolithic) compare_monolithic<M>(r, bar);
+}
+
+int run(const cli_options& o) {
+  const auto t_start = std::chrono::steady_clock::now();
+  progress bar(!o.quiet && pdd::stderr_is_terminal());
+  mesh_run r;
+  bar.stage("reading input");
+  read_input(o, r);
+  bar.stage("decomposing and meshing");
+  if (o.kernel == "native")
+    mesh_with_kernel<pdd::native::mesher>(o, r, bar);
+  else
+    mesh_with_kernel<pdd::cgal::mesher>(o, r, bar);
+  bar.stage("writing");
+  const auto t_write0 = std::chrono::steady_clock::now();
+  write_outputs(o, r);
   r.t_write = pdd::seconds_since(t_write0);
   r.t_total = pdd::seconds_since(t_start) - r.t_monolithic;
   bar.clear();
@@ -371,14 +388,7 @@ int run(const cli_options& o) {
     pdd::write_file_atomically(o.stats, [&](std::ostream& os) { os << j.dump(2) << '\n'; });
   }
   if (!o.quiet) print_summary(o, r);
-  if (r.report && !r.report->ok()) {
-    std::fprintf(stderr, "pdd-mesh: verification FAILED\n");
-    for (const auto& m : r.report->messages)
-      std::fprintf(stderr, "  %s\n", m.c_str());
-    return verification_failed;
-  }
-  if (r.report && !o.quiet) std::printf("pdd-mesh: verification passed\n");
-  return ok;
+  return report_verification(o, r);
 }
 
 } // namespace
