@@ -132,7 +132,8 @@ void mesh_distributed(const mesh_options& o, mpi_run& r) {
     if (r.path->subdomains() <= 1) {
       pdd::mpi::collectively(r.comm, [&] { mesh_whole_on_rank_0(r, measured); });
     } else {
-      const pdd::meshing_options mo{r.options.criteria, r.options.decoupling.max_repairs, r.options.sizing};
+      const pdd::meshing_options mo{r.options.criteria, r.options.decoupling.max_repairs,
+                                    r.options.sizing};
       r.meshing = pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), mo, pdd::cgal::mesher{},
                                             r.threads, measured);
     }
