@@ -89,14 +89,15 @@ public:
     stats_.estimated_triangles = estimate_.triangles;
     // without any area bound the mesh is graded by the geometry alone: the kernel meshes it
     const bool bounded = options_.sizing || std::isfinite(options_.criteria.max_area);
-    stats_.subdomains =
-        options_.subdomains != 0 ? options_.subdomains
-        : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads, options_.planning)
-                  : 1;
+    stats_.subdomains = options_.subdomains != 0 ? options_.subdomains
+                        : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads,
+                                                         options_.planning)
+                                  : 1;
     // the graded method (Algorithm 7.1 + graded path) where no shields are needed (input
     // angles >= 60 deg, Ruppert's condition) and k is neither scaled nor overridden
-    graded_plan_ = options_.sizing && stats_.subdomains > 1 && !(options_.decoupling.k_override > 0.0) &&
-                   options_.decoupling.k_scale == 1.0 && min_domain_angle_deg(domain_) >= 60.0;
+    graded_plan_ = options_.sizing && stats_.subdomains > 1 &&
+                   !(options_.decoupling.k_override > 0.0) && options_.decoupling.k_scale == 1.0 &&
+                   min_domain_angle_deg(domain_) >= 60.0;
   }
 
   /// N, the number of subdomains this pipeline uses.
@@ -200,10 +201,10 @@ public:
       timed.consume(0, std::move(m));
       timed.finish();
     } else {
-      meshing_statistics ms = mesh_subdomains(
-          decoupled_decomposition_,
-          {options_.criteria, options_.decoupling.max_repairs, options_.sizing, gradation_.expected_triangles},
-          mesher_, executor_, timed);
+      meshing_statistics ms = mesh_subdomains(decoupled_decomposition_,
+                                              {options_.criteria, options_.decoupling.max_repairs,
+                                               options_.sizing, gradation_.expected_triangles},
+                                              mesher_, executor_, timed);
       stats_.triangles = ms.triangles();
       stats_.interface_splits = ms.interface_splits;
       stats_.shield_splits = ms.shield_splits;
@@ -263,7 +264,8 @@ private:
     gradation_options go = options_.gradation;
     go.max_area = options_.criteria.max_area;
     go.mean_area_fraction = mean_triangle_area_fraction;
-    if (options_.subdomains == 0) go.max_subdomain_triangles = options_.planning.target_subdomain_triangles;
+    if (options_.subdomains == 0)
+      go.max_subdomain_triangles = options_.planning.target_subdomain_triangles;
     go.min_subdomains = stats_.subdomains;
     go.max_subdomains = std::max(go.max_subdomains, go.min_subdomains);
     decomposition_ = gradation_controlled_decompose(domain_, options_.sizing, go, mo, partitioner_,
