@@ -1,0 +1,210 @@
+/// \file verify_pieces.hpp
+/// pdd::verify_pieces: verifies a per-subdomain mesh (a .pvtu index over .vtu pieces, as
+/// `pdd-mesh --output-per-subdomain` and pdd::vtu_directory_sink write it) one piece at a time,
+/// without loading the whole mesh: every piece alone as pdd::verify checks a mesh, then every
+/// interface between pieces (bitwise equal shared edges, exact Delaunay across them).
+#pragma once
+
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_mesh.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/io/vtu_read.hpp>
+#include <pdd/mesh/detail/verify_pieces.hpp>
+#include <pdd/mesh/verify.hpp>
+#include <pdd/shielding/shield_statistics.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace pdd {
+
+/// What verify_pieces() found. Counts are exact; `messages` describe the first max_reported
+/// problems, each naming its piece (file name), triangle index and coordinates.
+struct pieces_report {
+  std::size_t pieces = 0, triangles = 0, vertices = 0;
+  std::size_t largest_piece_triangles = 0;
+  std::size_t interface_edges = 0;       ///< boundary edges matched bitwise by another piece
+  std::size_t domain_boundary_edges = 0; ///< unmatched boundary edges on an input segment
+  std::size_t max_open_edges = 0;        ///< peak size of the table of unmatched edges
+  /// Violations inside the pieces (as pdd::verify counts them; piece boundary edges excepted).
+  std::size_t delaunay_violations = 0, orientation_violations = 0, duplicate_vertices = 0,
+              quality_violations = 0, area_violations = 0, nonmanifold_edges = 0;
+  /// Interface edges whose two triangles run them in the same direction (overlap).
+  std::size_t interface_overlaps = 0;
+  /// Interface edges that are not locally Delaunay with the triangles of both sides.
+  std::size_t interface_delaunay_violations = 0;
+  /// Piece boundary edges on no input segment that no other piece has (bitwise).
+  std::size_t unmatched_edges = 0;
+  double area_domain = 0.0, area_mesh = 0.0;
+  bool area_ok = false;
+  std::vector<std::string> messages;
+
+  /// True if nothing was found and the total area matches the domain's.
+  bool ok() const noexcept {
+    return delaunay_violations == 0 && orientation_violations == 0 && duplicate_vertices == 0 &&
+           quality_violations == 0 && area_violations == 0 && nonmanifold_edges == 0 &&
+           interface_overlaps == 0 && interface_delaunay_violations == 0 && unmatched_edges == 0 &&
+           area_ok;
+  }
+};
+
+namespace detail {
+
+/// The per-piece checks of pdd::verify (orientation, quality outside shielded triangles of
+/// `input`, area bound, duplicates, nonmanifold and locally Delaunay interior edges) on piece
+/// m; adds its counts and messages (prefixed with `name`) to r and returns the edge table,
+/// whose one-triangle edges are the piece's boundary.
+inline verify_impl::edge_table check_piece(const triangle_mesh& m, const std::string& name,
+                                           const pslg& input, const verify_options& o,
+                                           pieces_report& r) {
+  verify_options vo = o;
+  vo.quality_exempt = find_shielded_triangles(m, input);
+  verification_report local;
+  violation_sink sink{local, o.max_reported};
+  const auto no_sizing = [](const point&) { return std::numeric_limits<double>::infinity(); };
+  const std::vector<std::uint8_t> flags = check_triangles(m, vo, no_sizing);
+  report_triangles(m, flags, sink);
+  report_duplicates(m, sink);
+  std::vector<char> valid(flags.size());
+  for (std::size_t t = 0; t < valid.size(); ++t)
+    valid[t] = !(flags[t] & tri_malformed);
+  verify_impl::edge_table table(m, valid);
+  for (verify_impl::edge_record& e : table.edges())
+    e.on_segment = e.count == 1; // piece boundary edges: checked across the interfaces
+  report_edges(m, table, check_edges(m, table), sink);
+  r.area_mesh += mesh_area(m, flags);
+  r.delaunay_violations += local.delaunay_violations;
+  r.orientation_violations += local.orientation_violations;
+  r.duplicate_vertices += local.duplicate_vertices;
+  r.quality_violations += local.quality_violations;
+  r.area_violations += local.area_violations;
+  r.nonmanifold_edges += local.nonmanifold_edges;
+  for (const std::string& msg : local.messages)
+    if (r.messages.size() < o.max_reported) r.messages.push_back(name + ": " + msg);
+  return table;
+}
+
+/// Matches the boundary edges of piece `piece` against the open edges of earlier pieces:
+/// a match is checked (opposite directions, exact Delaunay with both apexes) and closed, an
+/// edge without one is opened.
+inline void match_boundary(const triangle_mesh& m, const verify_impl::edge_table& table,
+                           std::uint32_t piece, const std::vector<std::string>& names,
+                           pieces_impl::open_edge_table& open, std::size_t max_reported,
+                           pieces_report& r) {
+  using verify_impl::str;
+  for (const verify_impl::edge_record& e : table.edges()) {
+    if (e.count != 1) continue;
+    const auto& tri = m.triangles[e.tri[0]];
+    const index_t apex = tri[0] != e.a && tri[0] != e.b   ? tri[0]
+                         : tri[1] != e.a && tri[1] != e.b ? tri[1]
+                                                          : tri[2];
+    const point& from = m.vertices[e.forward[0] ? e.a : e.b];
+    const point& to = m.vertices[e.forward[0] ? e.b : e.a];
+    const pieces_impl::open_edge side{piece, e.tri[0], from, to, m.vertices[apex]};
+    const auto inserted = open.try_emplace(pieces_impl::make_key(from, to).first, side);
+    if (inserted.second) {
+      r.max_open_edges = std::max(r.max_open_edges, open.size());
+      continue;
+    }
+    const pieces_impl::open_edge other = inserted.first->second;
+    open.erase(inserted.first);
+    ++r.interface_edges;
+    const auto where = [&] {
+      return names[piece] + ": triangle " + std::to_string(e.tri[0]) + " and " +
+             names[other.piece] + ": triangle " + std::to_string(other.triangle) + ", edge " +
+             str(from) + " " + str(to);
+    };
+    const bool same_direction =
+        std::bit_cast<std::uint64_t>(other.from.x) == std::bit_cast<std::uint64_t>(from.x) &&
+        std::bit_cast<std::uint64_t>(other.from.y) == std::bit_cast<std::uint64_t>(from.y);
+    if (same_direction) {
+      ++r.interface_overlaps;
+      if (r.messages.size() < max_reported)
+        r.messages.push_back(where() + ": both triangles on the same side of the interface");
+    } else if (pieces_impl::strictly_in_circle(from, to, side.apex, other.apex)) {
+      ++r.interface_delaunay_violations;
+      if (r.messages.size() < max_reported)
+        r.messages.push_back(where() + ": not locally Delaunay across the interface (apex " +
+                             str(other.apex) + " inside the circumcircle of the apex " +
+                             str(side.apex) + ")");
+    }
+  }
+}
+
+/// The edges left open after the last piece: those on an input segment are domain boundary,
+/// the others interface edges that no other piece has bitwise.
+inline void report_unmatched(const pieces_impl::open_edge_table& open, const pslg& input,
+                             const std::vector<std::string>& names, std::size_t max_reported,
+                             pieces_report& r) {
+  const pieces_impl::segment_index segments(input);
+  std::vector<const pieces_impl::open_edge*> bad;
+  for (const auto& entry : open) {
+    if (segments.on_a_segment(entry.second.from, entry.second.to))
+      ++r.domain_boundary_edges;
+    else
+      bad.push_back(&entry.second);
+  }
+  std::sort(bad.begin(), bad.end(), [](const auto* a, const auto* b) {
+    return a->piece != b->piece ? a->piece < b->piece : a->triangle < b->triangle;
+  });
+  r.unmatched_edges = bad.size();
+  for (const pieces_impl::open_edge* e : bad)
+    if (r.messages.size() < max_reported)
+      r.messages.push_back(names[e->piece] + ": triangle " + std::to_string(e->triangle) +
+                           ", edge " + verify_impl::str(e->from) + " " + verify_impl::str(e->to) +
+                           ": piece boundary edge on no input segment and in no other piece "
+                           "(with bitwise equal endpoints)");
+}
+
+} // namespace detail
+
+/// Verifies the per-subdomain mesh indexed by the .pvtu at `index` against the input PSLG
+/// `input` (the domain it meshes) and o.criteria (min_angle_deg, uniform max_area; pieces
+/// carry no sizing field): each piece alone with pdd::verify's checks (orientation, angle bound
+/// outside the shielded triangles of the input's small angles, area bound, duplicate vertices,
+/// nonmanifold edges, exact local Delaunay of its interior edges); then each piece boundary
+/// edge must appear in exactly one other piece with bitwise equal endpoints in the opposite
+/// direction and be locally Delaunay with the triangles of both sides (exact
+/// side_of_oriented_circle), or lie on an input segment (verify_impl::on_segment_line); and
+/// the pieces' areas must sum to domain_area(input) within o.area_tolerance.
+/// Not checked (pieces carry no segments): that input segments inside one piece are unions of
+/// its edges.
+/// Memory: one piece at a time, plus the open boundary edges (each piece's boundary edges
+/// wait in a hash table, keyed by their endpoints' bits, until the neighbour's piece closes
+/// them): O(largest piece + boundary edges of all pieces) at worst, reported as max_open_edges.
+/// \throws pdd::error naming the file for an unreadable, truncated or foreign .pvtu or .vtu;
+/// geometry_error as domain_area(input). Complexity: O(total size) expected.
+inline pieces_report verify_pieces(const std::filesystem::path& index, const pslg& input,
+                                   const verify_options& o = {}) {
+  const std::vector<std::filesystem::path> files = read_pvtu(index);
+  std::vector<std::string> names;
+  for (const auto& f : files)
+    names.push_back(f.filename().string());
+  pieces_report r;
+  r.area_domain = domain_area(input);
+  detail::pieces_impl::open_edge_table open;
+  for (std::size_t k = 0; k < files.size(); ++k) {
+    const triangle_mesh m = read_vtu(files[k]);
+    ++r.pieces;
+    r.triangles += m.triangles.size();
+    r.vertices += m.vertices.size();
+    r.largest_piece_triangles = std::max(r.largest_piece_triangles, m.triangles.size());
+    const auto table = detail::check_piece(m, names[k], input, o, r);
+    detail::match_boundary(m, table, static_cast<std::uint32_t>(k), names, open, o.max_reported, r);
+  }
+  detail::report_unmatched(open, input, names, o.max_reported, r);
+  r.area_ok = std::abs(r.area_mesh - r.area_domain) <= o.area_tolerance * std::abs(r.area_domain);
+  if (!r.area_ok && r.messages.size() < o.max_reported)
+    r.messages.push_back("total area of the pieces " + std::to_string(r.area_mesh) +
+                         " differs from the domain area " + std::to_string(r.area_domain));
+  return r;
+}
+
+} // namespace pdd
