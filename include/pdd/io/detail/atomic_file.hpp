@@ -32,7 +32,11 @@ inline std::filesystem::path temporary_sibling(const std::filesystem::path& targ
   std::string digits(16, '0');
   for (int i = 15; i >= 0; --i, x >>= 4)
     digits[static_cast<std::size_t>(i)] = hex[x & 15];
-  return target.parent_path() / ("." + target.filename().string() + ".pdd-tmp-" + digits);
+  // Appended piece by piece: GCC 12's "." + std::string inlines into a false
+  // -Wstringop-overflow (GCC bug 105329) in some translation units.
+  std::string name(1, '.');
+  name.append(target.filename().string()).append(".pdd-tmp-").append(digits);
+  return target.parent_path() / name;
 }
 
 inline std::string errno_message(int e) {

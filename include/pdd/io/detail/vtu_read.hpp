@@ -27,7 +27,8 @@ inline error vtu_error(const std::filesystem::path& path, const std::string& wha
 
 /// The value of attribute `name` in the XML tag text `tag` (between its quotes), if present.
 inline std::optional<std::string> xml_attribute(std::string_view tag, std::string_view name) {
-  const std::string key = " " + std::string(name) + "=\"";
+  std::string key(1, ' ');
+  key.append(name).append("=\"");
   const std::size_t at = tag.find(key);
   if (at == std::string_view::npos) return std::nullopt;
   const std::size_t begin = at + key.size();
@@ -62,7 +63,8 @@ inline std::optional<std::string> xml_unescape(std::string_view s) {
 /// Every tag `<name ...>` of the XML text, as its text without the angle brackets.
 inline std::vector<std::string_view> xml_tags(std::string_view xml, std::string_view name) {
   std::vector<std::string_view> tags;
-  const std::string open = "<" + std::string(name) + " ";
+  std::string open(1, '<');
+  open.append(name).append(" ");
   for (std::size_t at = xml.find(open); at != std::string_view::npos; at = xml.find(open, at + 1)) {
     const std::size_t end = xml.find('>', at);
     if (end == std::string_view::npos) break;
