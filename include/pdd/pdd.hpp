@@ -104,6 +104,7 @@
 #include <pdd/io/svg_options.hpp>
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/io/vtu.hpp>
+#include <pdd/io/vtu_read.hpp>
 #include <pdd/io/write_mesh.hpp>
 #include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/meshing/mesh_subdomains.hpp>
@@ -116,6 +117,7 @@
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verification_report.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/mesh/verify_pieces.hpp>
 
 // level 8: pipeline
 #include <pdd/pipeline.hpp>

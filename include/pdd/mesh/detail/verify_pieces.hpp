@@ -134,7 +134,7 @@ private:
   std::size_t cell_y(double y) const { return cell(y, box_.ymin, box_.height()); }
 
   const pslg& g_;
-  bbox box_;
+  pdd::bbox box_;
   std::size_t side_ = 1;
   double margin_ = 0.0;
   std::vector<std::vector<index_t>> cells_;
