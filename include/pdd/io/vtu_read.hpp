@@ -24,8 +24,8 @@ namespace detail {
 /// Triangles from connectivity, offsets and types, each checked (3 * (i + 1), VTK triangle 5,
 /// vertex index < n).
 template <class Index>
-void fill_vtu_triangles(const std::filesystem::path& path, std::ifstream& in, const vtu_header& h,
-                        const char* type, triangle_mesh& m) {
+void fill_vtu_triangles(const std::filesystem::path& path, std::ifstream& in,
+                        const vtu_read_header_info& h, const char* type, triangle_mesh& m) {
   const auto conn = read_vtu_array<Index>(path, in, h, "connectivity", type, 3 * h.cells);
   const auto offsets = read_vtu_array<Index>(path, in, h, "offsets", type, h.cells);
   const auto types = read_vtu_array<std::uint8_t>(path, in, h, "types", "UInt8", h.cells);
@@ -56,7 +56,7 @@ void fill_vtu_triangles(const std::filesystem::path& path, std::ifstream& in, co
 inline triangle_mesh read_vtu(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw detail::vtu_error(path, "cannot open for reading");
-  const detail::vtu_header h = detail::read_vtu_header(path, in);
+  const detail::vtu_read_header_info h = detail::read_vtu_header(path, in);
   triangle_mesh m;
   m.vertex_markers =
       detail::read_vtu_array<std::int32_t>(path, in, h, "vertex_marker", "Int32", h.points);

@@ -93,7 +93,7 @@ struct vtu_array {
 
 /// The parsed XML header of a pdd .vtu piece; `data_start` is the file offset just after the
 /// '_' that opens the appended raw data.
-struct vtu_header {
+struct vtu_read_header_info {
   std::uint64_t points = 0, cells = 0;
   std::vector<vtu_array> arrays;
   std::uint64_t data_start = 0;
@@ -122,8 +122,8 @@ inline void check_vtkfile_tag(const std::filesystem::path& path, std::string_vie
 }
 
 /// Reads and parses the XML header of the .vtu at `path`, opened as `in`.
-inline vtu_header read_vtu_header(const std::filesystem::path& path, std::ifstream& in) {
-  vtu_header h;
+inline vtu_read_header_info read_vtu_header(const std::filesystem::path& path, std::ifstream& in) {
+  vtu_read_header_info h;
   in.seekg(0, std::ios::end);
   h.file_size = static_cast<std::uint64_t>(in.tellg());
   in.seekg(0);
@@ -162,8 +162,8 @@ inline vtu_header read_vtu_header(const std::filesystem::path& path, std::ifstre
 /// sizeof(T). Never reads past the end of the file.
 template <class T>
 std::vector<T> read_vtu_array(const std::filesystem::path& path, std::ifstream& in,
-                              const vtu_header& h, const std::string& name, const char* vtk_type,
-                              std::uint64_t count) {
+                              const vtu_read_header_info& h, const std::string& name,
+                              const char* vtk_type, std::uint64_t count) {
   const vtu_array& a = h.array(path, name);
   if (a.type != vtk_type)
     throw vtu_error(path, "DataArray '" + name + "' has type " + a.type + ", expected " + vtk_type);
