@@ -5,9 +5,10 @@
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/kernels/cgal/detail/mesher.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/criteria.hpp>
+#include <pdd/kernels/cgal/detail/mesher.hpp>
+#include <pdd/kernels/detail/mesher_input.hpp>
 
 #include <CGAL/exceptions.h>
 
@@ -61,17 +62,7 @@ struct mesher {
   }
 
 private:
-  static void check(const pslg& d, const mesh_criteria& c) {
-    if (!d.vertex_markers.empty() && d.vertex_markers.size() != d.vertices.size())
-      throw meshing_error(-1, "vertex_markers has " + std::to_string(d.vertex_markers.size()) +
-                                  " entries for " + std::to_string(d.vertices.size()) +
-                                  " vertices");
-    if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
-      throw meshing_error(-1, "min_angle_deg must lie in [0, 60), got " +
-                                  std::to_string(c.min_angle_deg));
-    if (!(c.max_area > 0.0))
-      throw meshing_error(-1, "max_area must be > 0, got " + std::to_string(c.max_area));
-  }
+  static void check(const pslg& d, const mesh_criteria& c) { detail::check_mesher_input(d, c); }
 
   template <SizingField S>
   static mesher_result run(const pslg& d, const mesh_criteria& c, const S& sizing) {

@@ -6,6 +6,7 @@
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/kernels/detail/mesher_input.hpp>
 #include <pdd/kernels/native/detail/build.hpp>
 #include <pdd/kernels/native/detail/extract.hpp>
 #include <pdd/kernels/native/detail/refine.hpp>
@@ -66,17 +67,7 @@ struct mesher {
   }
 
 private:
-  static void check(const pslg& d, const mesh_criteria& c) {
-    if (!d.vertex_markers.empty() && d.vertex_markers.size() != d.vertices.size())
-      throw meshing_error(-1, "vertex_markers has " + std::to_string(d.vertex_markers.size()) +
-                                  " entries for " + std::to_string(d.vertices.size()) +
-                                  " vertices");
-    if (!(c.min_angle_deg >= 0.0 && c.min_angle_deg < 60.0))
-      throw meshing_error(-1, "min_angle_deg must lie in [0, 60), got " +
-                                  std::to_string(c.min_angle_deg));
-    if (!(c.max_area > 0.0))
-      throw meshing_error(-1, "max_area must be > 0, got " + std::to_string(c.max_area));
-  }
+  static void check(const pslg& d, const mesh_criteria& c) { detail::check_mesher_input(d, c); }
 };
 
 } // namespace pdd::native

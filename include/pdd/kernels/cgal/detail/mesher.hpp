@@ -12,6 +12,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/detail/cluster_rule.hpp>
 #include <pdd/kernels/cgal/detail/mesher_faces.hpp>
+#include <pdd/kernels/detail/mesher_input.hpp>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -19,16 +20,12 @@
 #include <CGAL/Mesh_2/Refine_edges.h>
 #include <CGAL/Mesh_2/Refine_edges_visitor.h>
 #include <CGAL/Mesh_2/Refine_edges_with_clusters.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
-#include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -190,21 +187,10 @@ inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
 /// \throws meshing_error for a non-finite coordinate or coinciding vertices.
 /// \returns the vertex handle of every input vertex.
 inline std::vector<vertex_handle> insert_vertices(cdt& tr, const pslg& d) {
-  const std::size_t n = d.vertices.size();
-  if (n >= none) throw meshing_error(-1, "too many vertices");
-  std::vector<cgal_point> pts;
-  pts.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const point& p = d.vertices[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
-      throw meshing_error(-1, "vertex " + std::to_string(i) + " has a non-finite coordinate");
-    pts.emplace_back(p.x, p.y);
-  }
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  using map = CGAL::Pointer_property_map<cgal_point>::type;
-  CGAL::spatial_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_2<epick, map>(CGAL::make_property_map(pts)));
+  const spatial_insertion in = spatial_insertion_order(d, none);
+  const std::vector<cgal_point>& pts = in.points;
+  const std::vector<std::size_t>& order = in.order;
+  const std::size_t n = pts.size();
   std::vector<vertex_handle> vh(n);
   face_handle hint;
   for (const std::size_t i : order) {
@@ -267,35 +253,6 @@ void refine(cdt& tr, Criteria& criteria) {
   face_level.scan_triangulation();
   face_level.refine(visitor);
 }
-
-/// Finds the index of the input segment with endpoints {a, b} (sorted table lookup).
-class segment_table {
-public:
-  explicit segment_table(const pslg& d) {
-    keys_.reserve(d.segments.size());
-    for (std::size_t s = 0; s < d.segments.size(); ++s) {
-      const auto& sg = d.segments[s];
-      keys_.push_back({key(sg.a, sg.b), static_cast<index_t>(s)});
-    }
-    std::stable_sort(keys_.begin(), keys_.end(),
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
-  }
-  /// The first segment with endpoints {a, b}; `none` if there is none.
-  index_t find(index_t a, index_t b) const {
-    const std::uint64_t k = key(a, b);
-    const auto it = std::lower_bound(keys_.begin(), keys_.end(), k,
-                                     [](const auto& x, std::uint64_t v) { return x.first < v; });
-    return it != keys_.end() && it->first == k ? it->second : none;
-  }
-
-private:
-  static std::uint64_t key(index_t a, index_t b) {
-    const auto lo = static_cast<std::uint64_t>(std::min(a, b));
-    const auto hi = static_cast<std::uint64_t>(std::max(a, b));
-    return lo << 32 | hi;
-  }
-  std::vector<std::pair<std::uint64_t, index_t>> keys_;
-};
 
 /// Numbers the Steiner vertices after the input vertices, in the triangulation's (insertion)
 /// order, and copies all vertices with their markers into m.

@@ -9,14 +9,10 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/kernels/detail/mesher_input.hpp>
 #include <pdd/kernels/native/detail/insertion.hpp>
 
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
-#include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
-
 #include <cmath>
-#include <numeric>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,21 +22,7 @@ namespace pdd::detail::native_mesh {
 /// Inserts the input vertices: vertex i of d is vertex i of tr; the bounding triangle's three
 /// vertices follow them. \throws meshing_error for non-finite or coinciding vertices.
 inline void insert_vertices(triangulation& tr, cavity& cav, const pslg& d) {
-  const std::size_t n = d.vertices.size();
-  if (n + 3 >= no_index / 2) throw meshing_error(-1, "too many vertices");
-  std::vector<epick::Point_2> pts;
-  pts.reserve(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const point& p = d.vertices[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y))
-      throw meshing_error(-1, "vertex " + std::to_string(i) + " has a non-finite coordinate");
-    pts.emplace_back(p.x, p.y);
-  }
-  std::vector<std::size_t> order(n);
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  using map = CGAL::Pointer_property_map<epick::Point_2>::type;
-  CGAL::spatial_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_2<epick, map>(CGAL::make_property_map(pts)));
+  const std::vector<std::size_t> order = spatial_insertion_order(d, no_index / 2 - 3).order;
   tr.pts = d.vertices;
   tr.start_bounding_triangle();
   std::uint32_t rng = 12345u, hint = 0;

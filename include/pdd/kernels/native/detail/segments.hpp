@@ -5,6 +5,7 @@
 
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
+#include <pdd/kernels/detail/mesher_input.hpp>
 #include <pdd/kernels/native/detail/triangulation.hpp>
 
 #include <algorithm>
@@ -14,31 +15,6 @@
 #include <vector>
 
 namespace pdd::detail::native_mesh {
-
-/// Finds the index of the input segment with endpoints {a, b} (sorted table lookup).
-class segment_table {
-public:
-  explicit segment_table(const pslg& d) {
-    keys_.reserve(d.segments.size());
-    for (std::size_t s = 0; s < d.segments.size(); ++s)
-      keys_.push_back({key(d.segments[s].a, d.segments[s].b), static_cast<index_t>(s)});
-    std::stable_sort(keys_.begin(), keys_.end(),
-                     [](const auto& x, const auto& y) { return x.first < y.first; });
-  }
-  /// The first segment with endpoints {a, b}; no_index if there is none.
-  index_t find(index_t a, index_t b) const {
-    const std::uint64_t k = key(a, b);
-    const auto it = std::lower_bound(keys_.begin(), keys_.end(), k,
-                                     [](const auto& x, std::uint64_t v) { return x.first < v; });
-    return it != keys_.end() && it->first == k ? it->second : no_index;
-  }
-
-private:
-  static std::uint64_t key(index_t a, index_t b) {
-    return static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b);
-  }
-  std::vector<std::pair<std::uint64_t, index_t>> keys_;
-};
 
 /// Per vertex of the triangulation, the input segment a Steiner vertex was inserted on
 /// (no_index for input vertices, the bounding triangle and free Steiner vertices).
