@@ -124,11 +124,7 @@ public:
   }
   /// The density weight of every leaf.
   std::vector<double> operator()(std::span<const madd_leaf_view> leaves) const {
-    std::vector<double> w;
-    w.reserve(leaves.size());
-    for (const auto& l : leaves)
-      w.push_back(leaf_weight(l));
-    return w;
+    return detail::weigh_leaves(leaves, [this](const madd_leaf_view& l) { return leaf_weight(l); });
   }
 
   /// The weight W(q) of the input boundary at q (a vertex's weight, or interpolated along the
@@ -236,11 +232,7 @@ public:
   }
   /// The density weight of every leaf.
   std::vector<double> operator()(std::span<const madd_leaf_view> leaves) const {
-    std::vector<double> w;
-    w.reserve(leaves.size());
-    for (const auto& l : leaves)
-      w.push_back(leaf_weight(l));
-    return w;
+    return detail::weigh_leaves(leaves, [this](const madd_leaf_view& l) { return leaf_weight(l); });
   }
   std::size_t size() const noexcept { return d_->points.size(); }
 

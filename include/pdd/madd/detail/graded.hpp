@@ -141,4 +141,14 @@ inline void interpolate_interfaces(std::span<const point> loop, const std::vecto
   }
 }
 
+/// One weight per leaf: weigh(leaf) for every leaf, in order (the split policies' answer).
+template <class Weigh>
+std::vector<double> weigh_leaves(std::span<const madd_leaf_view> leaves, const Weigh& weigh) {
+  std::vector<double> w;
+  w.reserve(leaves.size());
+  for (const auto& l : leaves)
+    w.push_back(weigh(l));
+  return w;
+}
+
 } // namespace pdd::detail
