@@ -10,6 +10,7 @@
 #include <pdd/sizing/analytic.hpp>
 #include <pdd/sizing/grid.hpp>
 
+#include <decomposition_compare.hpp>
 #include <test_domains.hpp>
 #include <test_files.hpp>
 
@@ -124,16 +125,7 @@ pdd::decomposition graded_square(double p, unsigned threads, std::size_t n = 32)
   return pdd::decompose(g, o);
 }
 
-void expect_identical(const pdd::decomposition& a, const pdd::decomposition& b) {
-  ASSERT_EQ(a.vertices.size(), b.vertices.size());
-  ASSERT_EQ(a.subdomains.size(), b.subdomains.size());
-  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
-    EXPECT_EQ(a.vertices[i].x, b.vertices[i].x);
-    EXPECT_EQ(a.vertices[i].y, b.vertices[i].y);
-  }
-  for (std::size_t s = 0; s < a.subdomains.size(); ++s)
-    EXPECT_EQ(a.subdomains[s].loops, b.subdomains[s].loops);
-}
+using pdd::test::expect_same_decomposition;
 
 TEST(MaddGradedDecompose, WeightedSideGetsSmallerSubdomains) {
   const pdd::pslg g = pdd::test::unit_square();
@@ -157,7 +149,7 @@ TEST(MaddGradedDecompose, InterpolationFactorChangesTheDecomposition) {
 }
 
 TEST(MaddGradedDecompose, BitwiseIdenticalAcrossThreads) {
-  expect_identical(graded_square(0.5, 1, 48), graded_square(0.5, 2, 48));
+  expect_same_decomposition(graded_square(0.5, 1, 48), graded_square(0.5, 2, 48));
 }
 
 TEST(MaddGradedDecompose, BackgroundNodesConcentrateTheSubdomains) {
@@ -208,7 +200,7 @@ TEST(MaddGradedDecompose, AreaRatioRuleHoldsOnEveryFinalSubdomain) {
     if (threads == 1)
       first = d;
     else
-      expect_identical(first, d);
+      expect_same_decomposition(first, d);
   }
 }
 

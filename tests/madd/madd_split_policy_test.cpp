@@ -4,6 +4,7 @@
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
 
+#include <decomposition_compare.hpp>
 #include <test_domains.hpp>
 
 #include <gtest/gtest.h>
@@ -83,14 +84,7 @@ TEST(MaddSplitPolicy, BitwiseIdenticalAcrossThreads) {
   const pdd::decomposition a = pdd::decompose(g, o);
   o.threads = 2;
   const pdd::decomposition b = pdd::decompose(g, o);
-  ASSERT_EQ(a.vertices.size(), b.vertices.size());
-  ASSERT_EQ(a.subdomains.size(), b.subdomains.size());
-  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
-    EXPECT_EQ(a.vertices[i].x, b.vertices[i].x);
-    EXPECT_EQ(a.vertices[i].y, b.vertices[i].y);
-  }
-  for (std::size_t s = 0; s < a.subdomains.size(); ++s)
-    EXPECT_EQ(a.subdomains[s].loops, b.subdomains[s].loops);
+  pdd::test::expect_same_decomposition(a, b);
 }
 
 TEST(MaddSplitPolicy, WrongPriorityCountIsAnError) {
