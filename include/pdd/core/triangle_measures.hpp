@@ -73,15 +73,28 @@ inline double squared_sine_min_angle(const point& a, const point& b, const point
   return two_area * two_area / p;
 }
 
-/// The three angles of (a, b, c) in degrees, at a, b and c (atan2 of cross and dot products,
+/// The angle of the triangle (o, p, q) at o, in degrees (atan2 of the cross and dot products,
 /// accurate for small and large angles alike).
+inline double angle_at_deg(const point& o, const point& p, const point& q) noexcept {
+  const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
+  return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 / std::numbers::pi;
+}
+
+/// The three angles of (a, b, c) in degrees, at a, b and c (angle_at_deg each).
 inline std::array<double, 3> triangle_angles_deg(const point& a, const point& b,
                                                  const point& c) noexcept {
-  const auto angle_at = [](const point& o, const point& p, const point& q) {
-    const double ux = p.x - o.x, uy = p.y - o.y, vx = q.x - o.x, vy = q.y - o.y;
-    return std::atan2(std::abs(ux * vy - uy * vx), ux * vx + uy * vy) * 180.0 / std::numbers::pi;
-  };
-  return {angle_at(a, b, c), angle_at(b, c, a), angle_at(c, a, b)};
+  return {angle_at_deg(a, b, c), angle_at_deg(b, c, a), angle_at_deg(c, a, b)};
+}
+
+/// The smallest angle of (a, b, c) in degrees: the one opposite the shortest edge, with one
+/// atan2 instead of three (where two edges tie to rounding, their opposite angles agree to
+/// rounding too).
+inline double smallest_angle_deg(const point& a, const point& b, const point& c) noexcept {
+  const double la = squared_distance(b, c);
+  const double lb = squared_distance(c, a);
+  const double lc = squared_distance(a, b);
+  if (la <= lb && la <= lc) return angle_at_deg(a, b, c);
+  return lb <= lc ? angle_at_deg(b, c, a) : angle_at_deg(c, a, b);
 }
 
 /// Circumradius over shortest edge of (a, b, c) (infinity for a degenerate triangle).

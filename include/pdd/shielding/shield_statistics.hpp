@@ -3,12 +3,13 @@
 /// which triangles are shielded, and their statistics apart from the others.
 #pragma once
 
+#include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
-#include <pdd/shielding/detail/plan.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
-#include <pdd/core/pslg.hpp>
-#include <pdd/core/triangle_mesh.hpp>
+#include <pdd/shielding/detail/plan.hpp>
+#include <pdd/shielding/detail/shielding_accumulator.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -21,8 +22,8 @@ namespace pdd {
 
 namespace detail {
 /// The apexes of the domain's angles < 60 deg (domain side) with their angles in degrees.
-inline std::map<std::pair<double, double>, double> small_angle_apexes(const pslg& domain) {
-  std::map<std::pair<double, double>, double> apex;
+inline small_angle_apex_map small_angle_apexes(const pslg& domain) {
+  small_angle_apex_map apex;
   const loop_structure ls = find_loops(domain);
   for (const polygon_loop& l : ls.loops) {
     const std::size_t n = l.vertices.size();
@@ -71,34 +72,20 @@ struct shielding_statistics {
 
 /// Computes shielding_statistics of a mesh of `domain` (shielded triangles as
 /// find_shielded_triangles finds them). \throws geometry_error as find_loops().
-/// Complexity O(T log s). Thread-safe; deterministic.
+/// Complexity O(T log s), in parallel (oneTBB). Thread-safe; the same result for any thread
+/// count (counts, minima and maxima only).
 inline shielding_statistics compute_shielding_statistics(const triangle_mesh& m,
                                                          const pslg& domain) {
   const auto apex = detail::small_angle_apexes(domain);
   shielding_statistics st;
   st.min_input_angle_deg = min_domain_angle_deg(domain);
-  double min_unshielded = std::numeric_limits<double>::infinity();
-  for (const auto& tri : m.triangles) {
-    const point& a = m.vertices[tri[0]];
-    const point& b = m.vertices[tri[1]];
-    const point& c = m.vertices[tri[2]];
-    const auto ang = detail::triangle_angles_deg(a, b, c);
-    const double ratio = detail::radius_edge_ratio(a, b, c);
-    int at = -1;
-    for (int i = 0; i < 3 && at < 0; ++i)
-      if (apex.count({m.vertices[tri[i]].x, m.vertices[tri[i]].y})) at = i;
-    if (at < 0) {
-      min_unshielded = std::min({min_unshielded, ang[0], ang[1], ang[2]});
-      st.max_ratio_unshielded = std::max(st.max_ratio_unshielded, ratio);
-      continue;
-    }
-    ++st.shielded_triangles;
-    st.max_ratio_shielded = std::max(st.max_ratio_shielded, ratio);
-    const double input = apex.at({m.vertices[tri[at]].x, m.vertices[tri[at]].y});
-    st.max_shield_angle_error_deg =
-        std::max(st.max_shield_angle_error_deg, std::abs(ang[at] - input));
-  }
-  st.min_angle_unshielded_deg = std::isfinite(min_unshielded) ? min_unshielded : 0.0;
+  const detail::shielding_accumulator acc = detail::accumulate_shielding(m, apex);
+  st.shielded_triangles = acc.shielded;
+  st.min_angle_unshielded_deg =
+      std::isfinite(acc.min_angle_unshielded) ? acc.min_angle_unshielded : 0.0;
+  st.max_ratio_unshielded = acc.max_ratio_unshielded;
+  st.max_ratio_shielded = acc.max_ratio_shielded;
+  st.max_shield_angle_error_deg = acc.max_angle_error;
   return st;
 }
 
