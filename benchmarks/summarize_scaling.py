@@ -51,8 +51,8 @@ def kernels_table(domain):
 def mpi_table(kind):
     print(f"\n### MPI, {kind} size\n")
     gain = "speed-up wall(1) / wall(P)" if kind == "fixed" else "efficiency wall(1) / wall(P)"
-    print(f"| ranks P | triangles | wall s | path s | mesh s | {gain} | T_e us (P * mesh / triangles) |")
-    print("|---|---|---|---|---|---|---|")
+    print(f"| ranks P | triangles | wall s | path s | mesh s | {gain} | T_e us (P * mesh / triangles) | imbalance max/mean busy |")
+    print("|---|---|---|---|---|---|---|---|")
     base = None
     p = 1
     while f"pipe mpi {kind} {p}" in runs:
@@ -62,7 +62,7 @@ def mpi_table(kind):
         speed = base / r["wall_s"]
         te = p * t.get("mesh", 0) / n * 1e6 if n else float("nan")
         print(f"| {p} | {n:,} | {r['wall_s']:.2f} | {t.get('path', 0):.2f} | {t.get('mesh', 0):.2f} "
-              f"| {speed:.2f} | {te:.2f} |")
+              f"| {speed:.2f} | {te:.2f} | {s.get('imbalance', float('nan')):.3f} |")
         p *= 2
 
 
