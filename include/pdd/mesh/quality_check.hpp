@@ -27,7 +27,8 @@ namespace pdd {
 
 /// Checks every triangle of m: vertex indices, counter-clockwise orientation, the area bound
 /// min(criteria.max_area, sizing at the centroid) and, unless it is a shielded triangle of
-/// `domain` (pdd::find_shielded_triangles), the angle bound criteria.min_angle_deg; with the
+/// the domain (pdd::find_shielded_triangles of its small input angles `angles`), the angle bound
+/// criteria.min_angle_deg; with the
 /// tolerances of pdd::verify (1e-9 deg, relative 1e-12 of the area).
 /// \param subdomain the id to report; -1: the triangle's marker (the subdomain id in a merged
 ///   mesh of pdd::generate), 0 without markers.
@@ -36,10 +37,10 @@ namespace pdd {
 ///   error (the kernel broke its guarantee), never a property of the input.
 /// Complexity O(T log s) for T triangles and s small input angles, parallel. Thread-safe.
 template <SizingField S = uniform_sizing>
-void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criteria& criteria,
-                   const S& sizing = {}, long long subdomain = -1) {
+void check_quality(const triangle_mesh& m, const small_input_angles& angles,
+                   const mesh_criteria& criteria, const S& sizing = {}, long long subdomain = -1) {
   verify_options vo{.criteria = criteria};
-  vo.quality_exempt = find_shielded_triangles(m, domain);
+  vo.quality_exempt = find_shielded_triangles(m, angles);
   const auto bound_at = [&](const point& p) { return static_cast<double>(sizing.area_at(p)); };
   const std::vector<std::uint8_t> flags = detail::check_triangles(m, vo, bound_at);
   const auto bad = std::find_if(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
@@ -57,34 +58,43 @@ void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criter
   throw meshing_error(id, detail::describe_bad_triangle(m, t, *bad, criteria, bound));
 }
 
+/// check_quality with the small input angles of `domain` (pdd::find_small_input_angles).
+/// \throws pdd::geometry_error as find_loops(), pdd::meshing_error as above.
+template <SizingField S = uniform_sizing>
+void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criteria& criteria,
+                   const S& sizing = {}, long long subdomain = -1) {
+  check_quality(m, find_small_input_angles(domain), criteria, sizing, subdomain);
+}
+
 /// A MeshSink decorator that runs check_quality on every subdomain mesh before handing it to
 /// the inner sink: a bad subdomain mesh throws (pdd::meshing_error with its id) and never
 /// reaches the inner sink, and the inner sink's finish() (e.g. the .pvtu index of a
 /// vtu_directory_sink, written last) is never reached either.
 /// \tparam Inner a MeshSink. \tparam S a SizingField.
-/// Thread-safety: consume() may run concurrently (as the inner sink's); `inner`, `domain` and
-/// `sizing` must outlive the sink.
+/// Thread-safety: consume() may run concurrently (as the inner sink's); `inner` must outlive
+/// the sink (the domain's small input angles are found once, in the constructor).
 template <MeshSink Inner, SizingField S = uniform_sizing>
 class quality_check_sink {
 public:
   static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
 
   quality_check_sink(Inner& inner, const pslg& domain, mesh_criteria criteria, S sizing = {})
-      : inner_(inner), domain_(domain), criteria_(criteria), sizing_(std::move(sizing)) {}
+      : inner_(inner), angles_(find_small_input_angles(domain)), criteria_(criteria),
+        sizing_(std::move(sizing)) {}
 
   void start(index_t n) {
     if constexpr (requires { inner_.start(n); }) inner_.start(n);
   }
   /// Checks the mesh (\throws as check_quality, with id), then hands it on.
   void consume(index_t id, triangle_mesh&& mesh) {
-    check_quality(mesh, domain_, criteria_, sizing_, static_cast<long long>(id));
+    check_quality(mesh, angles_, criteria_, sizing_, static_cast<long long>(id));
     inner_.consume(id, std::move(mesh));
   }
   void finish() { inner_.finish(); }
 
 private:
   Inner& inner_;
-  const pslg& domain_;
+  small_input_angles angles_; ///< the domain's, found once (not per subdomain)
   mesh_criteria criteria_;
   S sizing_;
 };

@@ -63,14 +63,15 @@ inline void accumulate(shielding_statistics& total, const shielding_statistics& 
 /// histogram (vertices: see accumulate).
 /// \tparam Inner a MeshSink. \tparam S a SizingField.
 /// Thread-safety: consume() may run concurrently (as the inner sink's); the rest from one thread.
-/// `domain`, `sizing` and `inner` must outlive the sink.
+/// `inner` must outlive the sink (the domain's small input angles are found once, in the
+/// constructor).
 template <MeshSink Inner, SizingField S = uniform_sizing>
 class statistics_sink {
 public:
   static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
 
   statistics_sink(Inner& inner, const pslg& domain, S sizing = {})
-      : inner_(inner), domain_(domain), sizing_(std::move(sizing)) {}
+      : inner_(inner), angles_(find_small_input_angles(domain)), sizing_(std::move(sizing)) {}
 
   void start(index_t n) {
     {
@@ -82,7 +83,7 @@ public:
 
   /// Measures the mesh, then hands it to the inner sink.
   void consume(index_t id, triangle_mesh&& mesh) {
-    part p{true, compute_statistics(mesh, sizing_), compute_shielding_statistics(mesh, domain_)};
+    part p{true, compute_statistics(mesh, sizing_), compute_shielding_statistics(mesh, angles_)};
     {
       const std::lock_guard lock(mutex_);
       if (parts_.size() <= id) parts_.resize(id + std::size_t{1});
@@ -115,7 +116,7 @@ private:
     shielding_statistics shielding;
   };
   Inner& inner_;
-  const pslg& domain_;
+  small_input_angles angles_; ///< the domain's, found once (not per subdomain)
   S sizing_;
   std::mutex mutex_;
   std::vector<part> parts_;

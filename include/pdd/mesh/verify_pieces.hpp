@@ -57,15 +57,15 @@ struct pieces_report {
 
 namespace detail {
 
-/// The per-piece checks of pdd::verify (orientation, quality outside shielded triangles of
-/// `input`, area bound, duplicates, nonmanifold and locally Delaunay interior edges) on piece
-/// m; adds its counts and messages (prefixed with `name`) to r and returns the edge table,
-/// whose one-triangle edges are the piece's boundary.
+/// The per-piece checks of pdd::verify (orientation, quality outside the shielded triangles of
+/// the input's small `angles`, area bound, duplicates, nonmanifold and locally Delaunay interior
+/// edges) on piece m; adds its counts and messages (prefixed with `name`) to r and returns the edge
+/// table, whose one-triangle edges are the piece's boundary.
 inline verify_impl::edge_table check_piece(const triangle_mesh& m, const std::string& name,
-                                           const pslg& input, const verify_options& o,
-                                           pieces_report& r) {
+                                           const small_input_angles& angles,
+                                           const verify_options& o, pieces_report& r) {
   verify_options vo = o;
-  vo.quality_exempt = find_shielded_triangles(m, input);
+  vo.quality_exempt = find_shielded_triangles(m, angles);
   verification_report local;
   violation_sink sink{local, o.max_reported};
   const auto no_sizing = [](const point&) { return std::numeric_limits<double>::infinity(); };
@@ -189,6 +189,7 @@ inline pieces_report verify_pieces(const std::filesystem::path& index, const psl
     names.push_back(f.filename().string());
   pieces_report r;
   r.area_domain = domain_area(input);
+  const small_input_angles angles = find_small_input_angles(input); // once, not per piece
   detail::pieces_impl::open_edge_table open;
   for (std::size_t k = 0; k < files.size(); ++k) {
     const triangle_mesh m = read_vtu(files[k]);
@@ -196,7 +197,7 @@ inline pieces_report verify_pieces(const std::filesystem::path& index, const psl
     r.triangles += m.triangles.size();
     r.vertices += m.vertices.size();
     r.largest_piece_triangles = std::max(r.largest_piece_triangles, m.triangles.size());
-    const auto table = detail::check_piece(m, names[k], input, o, r);
+    const auto table = detail::check_piece(m, names[k], angles, o, r);
     detail::match_boundary(m, table, static_cast<std::uint32_t>(k), names, open, o.max_reported, r);
   }
   detail::report_unmatched(open, input, names, o.max_reported, r);

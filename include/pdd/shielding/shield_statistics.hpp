@@ -40,19 +40,42 @@ inline small_angle_apex_map small_angle_apexes(const pslg& domain) {
 }
 } // namespace detail
 
-/// Per triangle of m: 1 when it is a shielded triangle of `domain`, i.e. it has a vertex at
-/// the apex of an input angle < 60 deg (a shielded apex lies in exactly its shielded triangle;
-/// vertices are matched by coordinates). Use it as verify_options::quality_exempt.
-/// \pre domain valid (closed loops). \throws geometry_error as find_loops().
-/// Complexity O(n log n + T log s). Thread-safe.
-inline std::vector<char> find_shielded_triangles(const triangle_mesh& m, const pslg& domain) {
-  const auto apex = detail::small_angle_apexes(domain);
+/// The small input angles of a domain: the apexes of its angles < 60 deg (domain side), keyed
+/// by their coordinates, with those angles, and its smallest input angle. What
+/// find_shielded_triangles and compute_shielding_statistics look up per triangle, found once
+/// for many meshes of one domain (every subdomain mesh of a run: finding the loops of a domain
+/// of 1,152 vertices for each of 267 subdomains cost more than meshing them).
+struct small_input_angles {
+  detail::small_angle_apex_map apexes;
+  double min_input_angle_deg = 360.0; ///< pdd::min_domain_angle_deg
+};
+
+/// The small input angles of `domain`. \pre domain valid (closed loops).
+/// 	hrows geometry_error as find_loops(). Complexity O(n log n). Thread-safe.
+inline small_input_angles find_small_input_angles(const pslg& domain) {
+  return {detail::small_angle_apexes(domain), min_domain_angle_deg(domain)};
+}
+
+/// Per triangle of m: 1 when it is a shielded triangle, i.e. it has a vertex at the apex of an
+/// input angle < 60 deg (a shielded apex lies in exactly its shielded triangle; vertices are
+/// matched by coordinates). Use it as verify_options::quality_exempt.
+/// Complexity O(T log s). Thread-safe.
+inline std::vector<char> find_shielded_triangles(const triangle_mesh& m,
+                                                 const small_input_angles& angles) {
+  const auto& apex = angles.apexes;
   std::vector<char> flag(m.triangles.size(), 0);
   if (apex.empty()) return flag;
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
     for (const index_t v : m.triangles[t])
       if (apex.count({m.vertices[v].x, m.vertices[v].y})) flag[t] = 1;
   return flag;
+}
+
+/// find_shielded_triangles of the small input angles of `domain`.
+/// \pre domain valid (closed loops). 	hrows geometry_error as find_loops().
+/// Complexity O(n log n + T log s). Thread-safe.
+inline std::vector<char> find_shielded_triangles(const triangle_mesh& m, const pslg& domain) {
+  return find_shielded_triangles(m, find_small_input_angles(domain));
 }
 
 /// Statistics of the shielded triangles apart from the others (Theorem 24 (1), (7)).
@@ -70,16 +93,15 @@ struct shielding_statistics {
   double max_shield_angle_error_deg = 0.0;
 };
 
-/// Computes shielding_statistics of a mesh of `domain` (shielded triangles as
-/// find_shielded_triangles finds them). \throws geometry_error as find_loops().
+/// Computes shielding_statistics of a mesh with the small input angles `angles`
+/// (find_small_input_angles; shielded triangles as find_shielded_triangles finds them).
 /// Complexity O(T log s), in parallel (oneTBB). Thread-safe; the same result for any thread
 /// count (counts, minima and maxima only).
 inline shielding_statistics compute_shielding_statistics(const triangle_mesh& m,
-                                                         const pslg& domain) {
-  const auto apex = detail::small_angle_apexes(domain);
+                                                         const small_input_angles& angles) {
   shielding_statistics st;
-  st.min_input_angle_deg = min_domain_angle_deg(domain);
-  const detail::shielding_accumulator acc = detail::accumulate_shielding(m, apex);
+  st.min_input_angle_deg = angles.min_input_angle_deg;
+  const detail::shielding_accumulator acc = detail::accumulate_shielding(m, angles.apexes);
   st.shielded_triangles = acc.shielded;
   st.min_angle_unshielded_deg =
       std::isfinite(acc.min_angle_unshielded) ? acc.min_angle_unshielded : 0.0;
@@ -87,6 +109,13 @@ inline shielding_statistics compute_shielding_statistics(const triangle_mesh& m,
   st.max_ratio_shielded = acc.max_ratio_shielded;
   st.max_shield_angle_error_deg = acc.max_angle_error;
   return st;
+}
+
+/// compute_shielding_statistics of a mesh of `domain`. 	hrows geometry_error as
+/// find_loops().
+inline shielding_statistics compute_shielding_statistics(const triangle_mesh& m,
+                                                         const pslg& domain) {
+  return compute_shielding_statistics(m, find_small_input_angles(domain));
 }
 
 } // namespace pdd
