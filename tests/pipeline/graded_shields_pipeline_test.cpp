@@ -86,4 +86,25 @@ TEST(GradedShieldsPipeline, RealGeometriesTakeTheGradedPath) {
   EXPECT_EQ(shielded, 12u); // the airfoil has no input angle below 60 deg
 }
 
+// decoupling.k_scale still takes the interim uniform path (with the uniform shields), and says so.
+TEST(GradedShieldsPipeline, KScaleStillFallsBackWithShields) {
+  const auto dir = pdd::test::shared_data_dir();
+  const auto path = dir / "lake_superior.poly";
+  if (dir.empty() || !std::filesystem::exists(path)) GTEST_SKIP() << "../shared/data absent";
+  const pdd::pslg g = pdd::read_poly(path.string());
+  pdd::generate_options o;
+  o.sizing = field(g, 6000.0, true);
+  o.subdomains = 16;
+  o.threads = 2;
+  o.decoupling.k_scale = 0.5;
+  const pdd::generate_result r = pdd::generate(g, o);
+  EXPECT_FALSE(r.statistics.graded_path);
+  EXPECT_NE(r.statistics.graded_fallback.find("k_scale"), std::string::npos);
+  EXPECT_EQ(r.statistics.shielded_triangles, pdd::detail::small_angle_apexes(g).size());
+  pdd::verify_options vo{.criteria = o.criteria};
+  vo.quality_exempt = pdd::find_shielded_triangles(r.mesh, g);
+  const pdd::verification_report rep = pdd::verify(r.mesh, g, vo, o.sizing);
+  EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
+}
+
 } // namespace
