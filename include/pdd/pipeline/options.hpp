@@ -50,8 +50,9 @@ struct generate_options {
   /// decomposition (pdd::gradation_controlled_decompose, Algorithm 7.1 with `gradation`) and
   /// the graded decoupling path (pdd::decouple_graded: k_i per subdomain from m(D_i), lowered
   /// where relation 7.1 needs it, Theorem 22); the subdomains are meshed largest expected
-  /// work first (Algorithm 7.2). Where input angles below 60 degrees need shields, or k_scale
-  /// or k_override are set, N-way MADD and the interim uniform path are used instead: k from
+  /// work first (Algorithm 7.2). Input angles below 60 degrees are shielded per subdomain with
+  /// Theorem 26's l_i from m(D_i) (pdd::shield_graded_decomposition). Where k_scale or
+  /// k_override are set, N-way MADD and the interim uniform path are used instead: k from
   /// the field's minimum over the domain's bounding box (generate_statistics::graded_fallback
   /// says why). The kernel meshes each subdomain with the field itself either way.
   any_sizing sizing{};
