@@ -182,6 +182,45 @@ TEST(BinaryMesh, RefusesTruncatedExtendedAndTamperedFilesNamingThem) {
   expect_refused(missing, "cannot open");
 }
 
+/// `bytes` with its checksum recomputed (a file made by someone who knows the format).
+std::string with_checksum(std::string bytes) {
+  const std::string_view all(bytes);
+  std::uint64_t h = pdd::detail::fnv1a64(all.substr(64), pdd::detail::fnv1a64(all.substr(0, 56)));
+  for (int i = 0; i < 8; ++i, h >>= 8)
+    bytes[56 + static_cast<std::size_t>(i)] = static_cast<char>(h & 0xff);
+  return bytes;
+}
+
+// Bad content behind a valid checksum: a NaN coordinate, a vertex index past n (9-bit indices
+// for 300 vertices reach 511), non-zero padding bits, a marker run past its count.
+TEST(BinaryMesh, RefusesBadContentBehindAValidChecksum) {
+  const auto m = random_mesh(4, 300, 501); // 1503 indices x 9 bits: 5 padding bits
+  const auto p = pdd::test::temp_path("content.pddm");
+  pdd::write_binary_mesh(p, m);
+  const std::string good = read_bytes(p);
+  write_bytes(p, with_checksum(good));
+  EXPECT_NO_THROW((void)pdd::read_binary_mesh(p));
+  std::string nan = good;
+  nan[64 + 6] = '\xf8';
+  nan[64 + 7] = '\x7f'; // vertex 0's x: 0x7ff8... (a quiet NaN)
+  write_bytes(p, with_checksum(nan));
+  expect_refused(p, "vertex 0 has a non-finite coordinate");
+  const std::size_t connectivity = good.size() - (3 * 501 * 9 + 7) / 8;
+  std::string index = good;
+  index[connectivity] = '\xff';
+  index[connectivity + 1] = static_cast<char>(index[connectivity + 1] | 1); // first index 511
+  write_bytes(p, with_checksum(index));
+  expect_refused(p, "triangle 0 refers to missing vertex 511");
+  std::string padding = good;
+  padding.back() = static_cast<char>(padding.back() | 0x80);
+  write_bytes(p, with_checksum(padding));
+  expect_refused(p, "padding is not zero");
+  std::string run = good; // the vertex marker section starts with a run: make it 127 longer
+  run[64 + 16 * 300] = static_cast<char>(run[64 + 16 * 300] + 127);
+  write_bytes(p, with_checksum(run));
+  expect_refused(p, "the vertex marker section");
+}
+
 TEST(BinaryMesh, IndexRoundTripAndRefusals) {
   const auto dir = pdd::test::fresh_dir("pddi");
   const auto p = dir / "mesh.pddi";

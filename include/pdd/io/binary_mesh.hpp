@@ -121,15 +121,7 @@ inline triangle_mesh read_binary_mesh(const std::filesystem::path& path) {
     throw detail::binary_mesh_error(
         path, "checksum mismatch: the file was changed or damaged after it was written");
   triangle_mesh m;
-  m.vertices.resize(static_cast<std::size_t>(h.vertices));
-  for (std::size_t i = 0; i < m.vertices.size(); ++i) {
-    const double x = std::bit_cast<double>(detail::get_le(body.data() + 16 * i, 8));
-    const double y = std::bit_cast<double>(detail::get_le(body.data() + 16 * i + 8, 8));
-    if (!std::isfinite(x) || !std::isfinite(y))
-      throw detail::binary_mesh_error(path, "vertex " + std::to_string(i) +
-                                                " has a non-finite coordinate");
-    m.vertices[i] = {x, y};
-  }
+  detail::decode_binary_coordinates(body, path, static_cast<std::size_t>(h.vertices), m);
   std::string_view rest = body.substr(16 * m.vertices.size());
   detail::decode_marker_runs({rest.substr(0, h.sections[0]), path, "vertex marker"},
                              m.vertices.size(), m.vertex_markers);

@@ -170,6 +170,20 @@ private:
   const char* name_;
 };
 
+/// Decodes the n vertices from the coordinates section at the start of `body` (its size checked
+/// against the header already) into m.vertices; every coordinate must be finite.
+inline void decode_binary_coordinates(std::string_view body, const std::filesystem::path& path,
+                                      std::size_t n, triangle_mesh& m) {
+  m.vertices.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double x = std::bit_cast<double>(get_le(body.data() + 16 * i, 8));
+    const double y = std::bit_cast<double>(get_le(body.data() + 16 * i + 8, 8));
+    if (!std::isfinite(x) || !std::isfinite(y))
+      throw binary_mesh_error(path, "vertex " + std::to_string(i) + " has a non-finite coordinate");
+    m.vertices[i] = {x, y};
+  }
+}
+
 /// Decodes the bit-packed connectivity section `section` (its size checked against the header
 /// already) into m.triangles: every index checked against n, the padding bits must be zero.
 inline void decode_binary_triangles(std::string_view section, const std::filesystem::path& path,
