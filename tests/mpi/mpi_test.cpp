@@ -164,11 +164,11 @@ TEST(MpiPipe, BinaryPiecesBitwiseAsThreaded) {
   ASSERT_EQ(threaded.code, 0) << threaded.output;
   ASSERT_TRUE(fs::exists(dir / "threaded" / "mesh.pddi"));
   for (const int ranks : {2, 3}) {
-    const std::string out = "p" + std::to_string(ranks);
+    const std::string out = std::string(1, 'p').append(std::to_string(ranks));
     const auto r = run_command(mpiexec(ranks) + PDD_MESH_MPI_EXE + " " + options +
                                " --threads 1 --output-per-subdomain " + shell_quoted(dir / out));
     ASSERT_EQ(r.code, 0) << r.output;
-    EXPECT_EQ(expect_same_files(dir / "threaded", dir / out, "binary P=" + out), 17u);
+    EXPECT_EQ(expect_same_files(dir / "threaded", dir / out, std::string("binary P=").append(out)), 17u);
   }
 }
 
@@ -216,7 +216,7 @@ TEST(MpiFailures, TheSameProgramWithoutTheFailureSucceeds) {
 // The disk-space check: rank 0 decides before any file, every rank ends with exit code 1.
 TEST(MpiFailures, DiskCheckRefusesOnEveryRankWithNoOutput) {
   for (const char* format : {"vtu", "binary"}) {
-    const fs::path dir = pdd::test::fresh_dir(std::string("disk_") + format);
+    const fs::path dir = pdd::test::fresh_dir(std::string("disk_").append(format));
     const auto r =
         run_command(mpiexec(3) + PDD_MESH_MPI_EXE + " " + shell_quoted(data / "pipe.poly") +
                     " --max-area 2e-3 --subdomains 16 --threads 1 --format " + format +
