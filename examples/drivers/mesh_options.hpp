@@ -1,21 +1,30 @@
 /// \file mesh_options.hpp
 /// The options pdd-mesh and pdd-mesh-mpi share (the input, the quality and sizing criteria, N,
-/// threads, --max-triangles, the per-subdomain output, --stats, --quiet), registered once for both,
-/// and the generate_options they give.
+/// threads, --max-triangles, the per-subdomain output and its --format, the disk-space check,
+/// --stats, --quiet), registered once for both, and the generate_options they give.
 #pragma once
 
 #include "sizing_options.hpp"
 
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/io/piece_files.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/pipeline/options.hpp>
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <map>
+#include <optional>
 #include <string>
+#include <system_error>
 
 namespace pdd::drivers {
 
@@ -30,6 +39,11 @@ struct mesh_options {
   unsigned threads = 0;
   pdd::gradation_options gradation; // --r1, --r2 (Algorithm 7.1 of the graded method)
   bool quiet = false;
+  /// --format: the per-subdomain output's file format (vtu: .vtu + mesh.pvtu; binary: .pddm +
+  /// mesh.pddi)
+  pdd::piece_format format = pdd::piece_format::vtu;
+  bool no_disk_check = false;                      ///< --no-disk-check
+  std::optional<std::uintmax_t> assume_free_bytes; ///< --assume-free-bytes (for tests)
 };
 
 /// Registers the shared options on `app` (`threads_help` describes --threads) and returns the
@@ -62,8 +76,23 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
   app.add_option("--r2", o.gradation.r2,
                  "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
   auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
-                             "write one .vtu per subdomain and an index mesh.pvtu into DIR "
-                             "(nothing is kept in memory)");
+                             "write one file per subdomain and an index (mesh.pvtu or mesh.pddi, "
+                             "see --format) into DIR (nothing is kept in memory)");
+  const std::map<std::string, pdd::piece_format> formats{{"vtu", pdd::piece_format::vtu},
+                                                         {"binary", pdd::piece_format::binary}};
+  app.add_option("--format", o.format,
+                 "file format of --output-per-subdomain: vtu (default; .vtu pieces, mesh.pvtu) or "
+                 "binary (.pddm pieces, mesh.pddi: about 15 instead of 35 bytes per triangle, "
+                 "docs/binary-mesh-format.md; pdd-convert turns it into VTU)")
+      ->transform(CLI::CheckedTransformer(formats))
+      ->needs(per);
+  auto* no_check = app.add_flag("--no-disk-check", o.no_disk_check,
+                                "do not refuse, up front, a per-subdomain output larger than the "
+                                "free space of its file system (estimated from the mesh size)");
+  app.add_option("--assume-free-bytes", o.assume_free_bytes,
+                 "for tests: let the disk-space check take this many bytes as the free space")
+      ->excludes(no_check)
+      ->needs(per);
   app.add_option("--stats", o.stats, "write statistics as JSON to this file");
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   return per;
@@ -82,6 +111,50 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
   g.gradation = o.gradation;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
+}
+
+/// The free bytes of the file system that will hold `dir` (asked of its nearest existing
+/// ancestor: the output folder may not exist yet).
+/// \throws pdd::error when the file system cannot be asked.
+inline std::uintmax_t free_bytes_for(const std::filesystem::path& dir) {
+  std::filesystem::path p = std::filesystem::absolute(dir);
+  while (!std::filesystem::exists(p) && p.has_parent_path() && p != p.parent_path())
+    p = p.parent_path();
+  std::error_code ec;
+  const std::filesystem::space_info s = std::filesystem::space(p, ec);
+  if (ec) throw pdd::error("cannot ask the free space of '" + p.string() + "': " + ec.message());
+  return s.available;
+}
+
+/// The disk-space check before a per-subdomain output (unless --no-disk-check): the estimated
+/// bytes of `triangles` triangles in `pieces` pieces of the chosen --format
+/// (pdd::estimated_piece_bytes) against the free space of the output folder's file system (or
+/// --assume-free-bytes). Non-finite estimates are not checked.
+/// \throws pdd::limit_error (exit code 1) with the estimate and the free space when it does
+/// not fit; pdd::error when the free space cannot be asked.
+inline void check_disk_space(const mesh_options& o, double triangles, std::size_t pieces) {
+  if (o.no_disk_check || o.per_subdomain_dir.empty() || !(triangles >= 0.0) ||
+      triangles == std::numeric_limits<double>::infinity())
+    return;
+  const double need = pdd::estimated_piece_bytes(
+      o.format, triangles, static_cast<double>(std::max<std::size_t>(1, pieces)));
+  const std::uintmax_t free =
+      o.assume_free_bytes ? *o.assume_free_bytes : free_bytes_for(o.per_subdomain_dir);
+  if (need <= static_cast<double>(free)) return;
+  char text[2048];
+  std::snprintf(
+      text, sizeof text,
+      "the per-subdomain output would need about %.3g bytes on disk (%.4g estimated "
+      "triangles in %zu pieces, %s format, about %.1f bytes per triangle), but the file "
+      "system of '%s' has %.3g bytes free%s. Free some space, write elsewhere, %sor use a "
+      "larger --max-area, or skip this check with --no-disk-check",
+      need, triangles, pieces, pdd::to_string(o.format), triangles > 0 ? need / triangles : 0.0,
+      o.per_subdomain_dir.c_str(), static_cast<double>(free),
+      o.assume_free_bytes ? " (--assume-free-bytes)" : "",
+      o.format == pdd::piece_format::vtu
+          ? "use --format binary (about 14 bytes per triangle against VTU's 35) "
+          : "");
+  throw pdd::limit_error(text);
 }
 
 } // namespace pdd::drivers

@@ -6,11 +6,13 @@
 //            [--compare-monolithic] [--stats FILE.json] [--svg FILE.svg]
 //            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
 //            [--sizing EXPR] [--background FILE.node] [--area-grid FILE] [--max-triangles N]
+//            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
 //
 // Exit codes: 0 ok, 1 bad input (also a run refused up front: its estimated size exceeds
-// --max-triangles or memory), 2 usage, 3 verification failed, 4 internal error (among them
-// a triangle outside the shielded corners that violates the angle or area bound: every mesh is
-// checked before it is written, and nothing is written then).
+// --max-triangles or memory, or its per-subdomain output the free disk space), 2 usage, 3
+// verification failed, 4 internal error (among them a triangle outside the shielded corners that
+// violates the angle or area bound: every mesh is checked before it is written, and nothing is
+// written then).
 #include "exit_code.hpp"
 #include "mesh_options.hpp"
 
@@ -119,16 +121,6 @@ private:
   progress& bar_;
 };
 
-/// Removes the subdomain files a failed run has written (all its jobs have ended).
-void remove_pieces(const pdd::vtu_directory_sink& files) {
-  for (std::size_t i = 0; i < files.pieces().size(); ++i)
-    if (files.pieces()[i].delivered) {
-      std::error_code ec; // best effort: the run has failed already
-      std::filesystem::remove(files.directory() / files.piece_name(static_cast<pdd::index_t>(i)),
-                              ec);
-    }
-}
-
 /// Everything one pdd-mesh run produces, filled phase by phase.
 struct mesh_run {
   pdd::pslg domain;
@@ -162,25 +154,38 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
 }
 
+/// --output-per-subdomain: the plan first (its size estimate), the disk-space check on it, then
+/// the meshes into files of the --format, each checked and measured on its way (the index comes
+/// last; a failed run leaves no file of its own).
+template <pdd::DelaunayMesher M>
+void mesh_into_files(const cli_options& o, mesh_run& r, progress& bar) {
+  const auto t0 = std::chrono::steady_clock::now();
+  pdd::pipeline<M> pl(r.domain, r.options, M{});
+  pl.template check_memory<pdd::piece_directory_sink>(); // up front, before any work
+  check_disk_space(o, pl.planned_triangles(), pl.subdomains());
+  pdd::piece_directory_sink files(o.per_subdomain_dir, o.format);
+  pdd::quality_check_sink checked(files, r.domain, r.options.criteria, r.sizing);
+  pdd::statistics_sink measured(checked, r.domain, r.sizing);
+  progress_sink sink(measured, bar);
+  try {
+    pl.mesh(sink);
+  } catch (const pdd::error&) {
+    files.remove_written(); // no index was written: leave no pieces of a failed run either
+    throw;
+  }
+  r.gs = std::move(pl.statistics());
+  r.gs.timings.total = pdd::seconds_since(t0);
+  r.st = measured.statistics();
+  r.sst = measured.shielding();
+}
+
 /// Meshes into a merged mesh, or with --output-per-subdomain into files, measuring each
 /// subdomain mesh on its way (nothing is kept). \tparam M the kernel (--kernel).
 template <pdd::DelaunayMesher M>
 void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
   const M mesher;
   if (!o.per_subdomain_dir.empty()) {
-    pdd::vtu_directory_sink files(o.per_subdomain_dir);
-    // each subdomain mesh is checked before its file is written (the .pvtu index comes last)
-    pdd::quality_check_sink checked(files, r.domain, r.options.criteria, r.sizing);
-    pdd::statistics_sink measured(checked, r.domain, r.sizing);
-    progress_sink sink(measured, bar);
-    try {
-      r.gs = pdd::generate(r.domain, r.options, sink, mesher);
-    } catch (const pdd::error&) {
-      remove_pieces(files); // no index was written: leave no pieces of a failed run either
-      throw;
-    }
-    r.st = measured.statistics();
-    r.sst = measured.shielding();
+    mesh_into_files<M>(o, r, bar);
   } else if (o.subdomains == 1) {
     pdd::generate_result g = pdd::generate(r.domain, r.options, mesher);
     r.gs = std::move(g.statistics);
@@ -330,8 +335,8 @@ void print_summary(const cli_options& o, const mesh_run& r) {
                 r.sst->min_angle_unshielded_deg);
   if (r.mesh && !o.output.empty()) std::printf("pdd-mesh: wrote %s\n", o.output.c_str());
   if (!o.per_subdomain_dir.empty())
-    std::printf("pdd-mesh: wrote %s/mesh.pvtu and %zu subdomain files\n",
-                o.per_subdomain_dir.c_str(), r.gs.subdomains);
+    std::printf("pdd-mesh: wrote %s/%s and %zu subdomain files (%s)\n", o.per_subdomain_dir.c_str(),
+                pdd::piece_index_name(o.format), r.gs.subdomains, pdd::to_string(o.format));
   if (r.mesh && !o.svg.empty()) std::printf("pdd-mesh: wrote %s\n", o.svg.c_str());
   if (r.mesh && !o.svg_histogram.empty())
     std::printf("pdd-mesh: wrote %s\n", o.svg_histogram.c_str());

@@ -1,12 +1,14 @@
-// pdd-verify: verifies a per-subdomain mesh (pdd-mesh --output-per-subdomain DIR) one piece at
-// a time, without loading it whole (pdd::verify_pieces): every piece alone as pdd::verify does,
-// then every interface (shared edges bitwise equal from both sides, exact Delaunay across them).
+// pdd-verify: verifies a per-subdomain mesh (pdd-mesh --output-per-subdomain DIR, VTU or
+// --format binary) one piece at a time, without loading it whole (pdd::verify_pieces): every piece
+// alone as pdd::verify does, then every interface (shared edges bitwise equal from both sides,
+// exact Delaunay across them).
 //
-//   pdd-verify DIR/mesh.pvtu INPUT.poly [--min-angle DEG] [--max-area A] [--stats FILE.json]
+//   pdd-verify DIR/mesh.{pvtu,pddi} INPUT.poly [--min-angle DEG] [--max-area A] [--stats FILE.json]
 //              [--max-reported K] [--quiet]
 //
 // Exit codes: 0 the mesh passed, 1 a file cannot be read or is not pdd's format (truncated,
-// tampered, foreign), 2 usage, 3 the mesh failed verification, 4 internal error.
+// tampered, foreign, another binary version), 2 usage, 3 the mesh failed verification, 4 internal
+// error.
 #include "exit_code.hpp"
 
 #include <pdd/geometry/properties.hpp>
@@ -99,8 +101,10 @@ int run(const cli_options& o) {
 
 int main(int argc, char** argv) {
   cli_options o;
-  CLI::App app{"pdd-verify: verify a per-subdomain mesh (.pvtu over .vtu pieces) piece by piece"};
-  app.add_option("index", o.index, "the .pvtu index (pdd-mesh --output-per-subdomain DIR)")
+  CLI::App app{"pdd-verify: verify a per-subdomain mesh (.pvtu over .vtu pieces, or .pddi over "
+               "binary .pddm pieces) piece by piece"};
+  app.add_option("index", o.index,
+                 "the index, mesh.pvtu or mesh.pddi (pdd-mesh --output-per-subdomain DIR)")
       ->required();
   app.add_option("input", o.input, "the input domain it meshes (Triangle .poly)")->required();
   app.add_option("--min-angle", o.criteria.min_angle_deg,

@@ -153,6 +153,25 @@ TEST(MpiPipe, AutomaticPlanAsThreadedOnAllRanksThreads) {
   EXPECT_GT(expect_automatic_plan_as_threaded(data / "pipe.poly", "2e-5"), 1);
 }
 
+// --format binary: the .pddm pieces and the .pddi index bitwise those of the threaded run.
+TEST(MpiPipe, BinaryPiecesBitwiseAsThreaded) {
+  const std::string options =
+      shell_quoted(data / "pipe.poly") + " --max-area 2e-3 --subdomains 16 --format binary --quiet";
+  const fs::path dir = pdd::test::fresh_dir("binary");
+  const auto threaded =
+      run_command(std::string(PDD_MESH_EXE) + " " + options +
+                  " --threads 2 --output-per-subdomain " + shell_quoted(dir / "threaded"));
+  ASSERT_EQ(threaded.code, 0) << threaded.output;
+  ASSERT_TRUE(fs::exists(dir / "threaded" / "mesh.pddi"));
+  for (const int ranks : {2, 3}) {
+    const std::string out = std::string(1, 'p').append(std::to_string(ranks));
+    const auto r = run_command(mpiexec(ranks) + PDD_MESH_MPI_EXE + " " + options +
+                               " --threads 1 --output-per-subdomain " + shell_quoted(dir / out));
+    ASSERT_EQ(r.code, 0) << r.output;
+    EXPECT_EQ(expect_same_files(dir / "threaded", dir / out, std::string("binary P=").append(out)), 17u);
+  }
+}
+
 /// pdd_mpi_throwing_mesher on the key, N = 16, into dir, failing on subdomain `fail`.
 pdd::test::command_result run_throwing(int ranks, const fs::path& dir, int fail) {
   return run_command(mpiexec(ranks) + PDD_MPI_THROWING_MESHER_EXE + " " +
@@ -192,6 +211,25 @@ TEST(MpiFailures, TheSameProgramWithoutTheFailureSucceeds) {
   // the library's files are the driver's
   const fs::path threaded = threaded_output({data / "key.poly", "2e-3", 16}, "key");
   EXPECT_EQ(expect_same_files(threaded / "out", dir / "out", "library API"), 17u);
+}
+
+// The disk-space check: rank 0 decides before any file, every rank ends with exit code 1.
+TEST(MpiFailures, DiskCheckRefusesOnEveryRankWithNoOutput) {
+  for (const char* format : {"vtu", "binary"}) {
+    const fs::path dir = pdd::test::fresh_dir(std::string("disk_").append(format));
+    const auto r =
+        run_command(mpiexec(3) + PDD_MESH_MPI_EXE + " " + shell_quoted(data / "pipe.poly") +
+                    " --max-area 2e-3 --subdomains 16 --threads 1 --format " + format +
+                    " --assume-free-bytes 10000 --output-per-subdomain " +
+                    shell_quoted(dir / "out") + " --stats " + shell_quoted(dir / "s.json"));
+    EXPECT_EQ(r.code, 1) << format << "\n" << r.output;
+    EXPECT_EQ(count(r.output, "pdd-mesh-mpi: error: the per-subdomain output would need about"), 1u)
+        << r.output;
+    EXPECT_NE(r.output.find("has 1e+04 bytes free (--assume-free-bytes)"), std::string::npos)
+        << r.output;
+    EXPECT_FALSE(fs::exists(dir / "out")) << format;
+    EXPECT_FALSE(fs::exists(dir / "s.json")) << format;
+  }
 }
 
 TEST(MpiFailures, BadInputIsReportedOnceByRankZero) {

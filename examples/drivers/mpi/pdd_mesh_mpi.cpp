@@ -7,10 +7,12 @@
 //   mpiexec -n P pdd-mesh-mpi INPUT.poly --output-per-subdomain DIR [--min-angle DEG]
 //            [--max-area A] [--sizing EXPR] [--background FILE.node] [--area-grid FILE]
 //            [--subdomains N] [--threads T] [--stats FILE.json] [--quiet]
+//            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
 //
 // Every subdomain file is bitwise the one `pdd-mesh ... --output-per-subdomain DIR` writes with
 // the same N. Exit codes as pdd-mesh (exit_code.hpp), the same on every rank; rank 0 prints the
-// error, and a failed run leaves no subdomain file, no index and no statistics.
+// error, and a failed run leaves no subdomain file, no index and no statistics. The disk-space
+// check (rank 0, on the plan's estimate, before any file) refuses with exit code 1 on every rank.
 #include "../exit_code.hpp"
 #include "../mesh_options.hpp"
 
@@ -120,12 +122,17 @@ void gather_statistics(const Measured& measured, mpi_run& r) {
   }
 }
 
-/// Phase 2: meshes the subdomains over the ranks into per-subdomain files (each checked
-/// before it is written); a failure on any rank removes every rank's files.
+/// Phase 2: checks the free disk space (rank 0, before any file), then meshes the subdomains
+/// over the ranks into per-subdomain files of the --format (each checked before it is
+/// written); a failure on any rank removes every rank's files.
 void mesh_distributed(const mesh_options& o, mpi_run& r) {
   const auto t0 = std::chrono::steady_clock::now();
-  std::optional<pdd::mpi::vtu_directory_sink> files;
-  pdd::mpi::collectively(r.comm, [&] { files.emplace(r.comm, o.per_subdomain_dir); });
+  // rank 0 decides whether the output fits on disk; every rank ends with its verdict
+  pdd::mpi::collectively(r.comm, [&] {
+    if (r.rank == 0) check_disk_space(o, r.path->planned_triangles(), r.path->subdomains());
+  });
+  std::optional<pdd::mpi::piece_directory_sink> files;
+  pdd::mpi::collectively(r.comm, [&] { files.emplace(r.comm, o.per_subdomain_dir, o.format); });
   pdd::quality_check_sink checked(*files, r.domain, r.options.criteria, r.sizing);
   pdd::statistics_sink measured(checked, r.domain, r.sizing);
   try {
@@ -198,8 +205,9 @@ int run(const mesh_options& o, mpi_run& r) {
                 r.meshing.imbalance());
     std::printf("pdd-mesh-mpi: min angle %.3f deg, max area / bound %.4f\n", r.st.min_angle_deg,
                 r.st.max_area_ratio);
-    std::printf("pdd-mesh-mpi: wrote %s/mesh.pvtu and %zu subdomain files\n",
-                o.per_subdomain_dir.c_str(), r.path->subdomains());
+    std::printf("pdd-mesh-mpi: wrote %s/%s and %zu subdomain files (%s)\n",
+                o.per_subdomain_dir.c_str(), pdd::piece_index_name(o.format), r.path->subdomains(),
+                pdd::to_string(o.format));
     if (!o.stats.empty()) std::printf("pdd-mesh-mpi: wrote %s\n", o.stats.c_str());
   }
   return ok;

@@ -1,12 +1,13 @@
 /// \file sinks.hpp
-/// MeshSink models that keep nothing in memory: pdd::vtu_directory_sink (one .vtu file per
-/// subdomain and a .pvtu index) and pdd::counting_sink (sizes only).
+/// MeshSink models that keep nothing in memory: pdd::piece_directory_sink (one .vtu or binary
+/// .pddm file per subdomain and an index; pdd::vtu_directory_sink for VTU) and
+/// pdd::counting_sink (sizes only).
 #pragma once
 
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/io/vtu.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
+#include <pdd/io/piece_files.hpp>
 
 #include <cstddef>
 #include <filesystem>
@@ -60,54 +61,75 @@ private:
 };
 } // namespace detail
 
-/// A MeshSink that writes each subdomain mesh to `<directory>/subdomain_<id>.vtu` (write_vtu:
-/// its own vertex numbering, cell data "subdomain" = id) as soon as it arrives, keeps only its
-/// sizes, and at finish() writes the index `<directory>/<index_name>` (write_pvtu) over the
-/// pieces in id order. A repeated id overwrites its file. Files are written atomically.
+/// A MeshSink that writes each subdomain mesh to `<directory>/subdomain_<id>.<ext>` as soon as
+/// it arrives (pdd::write_piece in the sink's format: write_vtu or write_binary_mesh; its own
+/// vertex numbering, triangle markers = id), keeps only its sizes, and at finish() writes the
+/// index `<directory>/<index_name>` (mesh.pvtu or mesh.pddi by default; pdd::write_piece_index)
+/// over the pieces in id order. A repeated id overwrites its file. Files are written atomically.
 /// Thread-safety: consume() may run concurrently (different files); the rest from one thread.
-class vtu_directory_sink {
+class piece_directory_sink {
 public:
   static constexpr bool retains_meshes = false;
 
-  /// Creates `directory` (and parents) if needed.
+  /// Creates `directory` (and parents) if needed. An empty `index_name`: piece_index_name(f).
   /// \throws pdd::error when the directory cannot be created.
-  explicit vtu_directory_sink(std::filesystem::path directory, std::string index_name = "mesh.pvtu")
-      : dir_(std::move(directory)), index_name_(std::move(index_name)) {
+  explicit piece_directory_sink(std::filesystem::path directory,
+                                piece_format format = piece_format::vtu,
+                                std::string index_name = {})
+      : dir_(std::move(directory)), format_(format),
+        index_name_(index_name.empty() ? piece_index_name(format) : std::move(index_name)) {
     std::error_code ec;
     std::filesystem::create_directories(dir_, ec);
     if (ec) throw error("cannot create directory '" + dir_.string() + "': " + ec.message());
   }
 
-  /// The file name of subdomain id's piece.
-  static std::string piece_name(index_t id) { return "subdomain_" + std::to_string(id) + ".vtu"; }
+  /// The file name of subdomain id's piece in format f (pdd::piece_file_name).
+  static std::string piece_name(index_t id, piece_format f = piece_format::vtu) {
+    return piece_file_name(id, f);
+  }
 
   void start(index_t n) { register_.start(n); }
   /// Writes the piece and records its sizes; the mesh is released on return.
   /// \throws pdd::error when writing fails.
   void consume(index_t id, triangle_mesh&& mesh) {
     const triangle_mesh m = std::move(mesh);
-    write_vtu(dir_ / piece_name(id), m);
+    write_piece(dir_ / piece_name(id, format_), m, format_);
     register_.record(id, m);
   }
-  /// Writes the .pvtu index over the delivered pieces.
+  /// Writes the index over the delivered pieces.
   void finish() {
     std::vector<std::string> files;
     for (std::size_t i = 0; i < register_.pieces().size(); ++i)
-      if (register_.pieces()[i].delivered) files.push_back(piece_name(static_cast<index_t>(i)));
-    write_pvtu(index_path(), files);
+      if (register_.pieces()[i].delivered)
+        files.push_back(piece_name(static_cast<index_t>(i), format_));
+    write_piece_index(index_path(), files, format_);
+  }
+
+  /// Removes the pieces this sink has written (best effort, for a failed run: no index exists).
+  void remove_written() const {
+    for (std::size_t i = 0; i < register_.pieces().size(); ++i)
+      if (register_.pieces()[i].delivered) {
+        std::error_code ec;
+        std::filesystem::remove(dir_ / piece_name(static_cast<index_t>(i), format_), ec);
+      }
   }
 
   std::filesystem::path index_path() const { return dir_ / index_name_; }
   const std::filesystem::path& directory() const noexcept { return dir_; }
+  piece_format format() const noexcept { return format_; }
   const std::vector<piece_counts>& pieces() const noexcept { return register_.pieces(); }
   std::size_t triangles() const noexcept { return register_.triangles(); }
 
 private:
   std::filesystem::path dir_;
+  piece_format format_;
   std::string index_name_;
   detail::piece_register register_;
 };
-static_assert(MeshSink<vtu_directory_sink>);
+static_assert(MeshSink<piece_directory_sink>);
+
+/// The VTU piece_directory_sink (its default format): `.vtu` pieces and `mesh.pvtu`.
+using vtu_directory_sink = piece_directory_sink;
 
 /// A MeshSink that only records the sizes of the subdomain meshes (benchmarks, dry runs).
 /// Thread-safety: consume() may run concurrently; the rest from one thread.

@@ -1,6 +1,7 @@
 /// \file verify_pieces.hpp
-/// pdd::verify_pieces: verifies a per-subdomain mesh (a .pvtu index over .vtu pieces, as
-/// `pdd-mesh --output-per-subdomain` and pdd::vtu_directory_sink write it) one piece at a time,
+/// pdd::verify_pieces: verifies a per-subdomain mesh (a .pvtu index over .vtu pieces or a .pddi
+/// index over binary .pddm pieces, as `pdd-mesh --output-per-subdomain [--format]` and
+/// pdd::piece_directory_sink write it) one piece at a time,
 /// without loading the whole mesh: every piece alone as pdd::verify checks a mesh, then every
 /// interface between pieces (bitwise equal shared edges, exact Delaunay across them).
 #pragma once
@@ -9,7 +10,7 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/io/vtu_read.hpp>
+#include <pdd/io/piece_files.hpp>
 #include <pdd/mesh/detail/verify_pieces.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
@@ -165,7 +166,8 @@ inline void report_unmatched(const pieces_impl::open_edge_table& open, const psl
 
 } // namespace detail
 
-/// Verifies the per-subdomain mesh indexed by the .pvtu at `index` against the input PSLG
+/// Verifies the per-subdomain mesh indexed by the .pvtu or .pddi at `index` (the format told
+/// from the files, pdd::read_piece_index and pdd::read_piece) against the input PSLG
 /// `input` (the domain it meshes) and o.criteria (min_angle_deg, uniform max_area; pieces
 /// carry no sizing field): each piece alone with pdd::verify's checks (orientation, angle bound
 /// outside the shielded triangles of the input's small angles, area bound, duplicate vertices,
@@ -179,11 +181,12 @@ inline void report_unmatched(const pieces_impl::open_edge_table& open, const psl
 /// Memory: one piece at a time, plus the open boundary edges (each piece's boundary edges
 /// wait in a hash table, keyed by their endpoints' bits, until the neighbour's piece closes
 /// them): O(largest piece + boundary edges of all pieces) at worst, reported as max_open_edges.
-/// \throws pdd::error naming the file for an unreadable, truncated or foreign .pvtu or .vtu;
+/// \throws pdd::error naming the file for an unreadable, truncated, tampered (binary: its
+/// checksum) or foreign index or piece;
 /// geometry_error as domain_area(input). Complexity: O(total size) expected.
 inline pieces_report verify_pieces(const std::filesystem::path& index, const pslg& input,
                                    const verify_options& o = {}) {
-  const std::vector<std::filesystem::path> files = read_pvtu(index);
+  const std::vector<std::filesystem::path> files = read_piece_index(index);
   std::vector<std::string> names;
   for (const auto& f : files)
     names.push_back(f.filename().string());
@@ -192,7 +195,7 @@ inline pieces_report verify_pieces(const std::filesystem::path& index, const psl
   const small_input_angles angles = find_small_input_angles(input); // once, not per piece
   detail::pieces_impl::open_edge_table open;
   for (std::size_t k = 0; k < files.size(); ++k) {
-    const triangle_mesh m = read_vtu(files[k]);
+    const triangle_mesh m = read_piece(files[k]);
     ++r.pieces;
     r.triangles += m.triangles.size();
     r.vertices += m.vertices.size();

@@ -1,11 +1,12 @@
 /// \file vtu_directory_sink.hpp
-/// pdd::mpi::vtu_directory_sink: per-subdomain VTU files written by the ranks that meshed them,
-/// and one .pvtu index written by rank 0 once every rank has succeeded.
+/// pdd::mpi::piece_directory_sink (pdd::mpi::vtu_directory_sink for VTU): per-subdomain files
+/// (VTU or binary) written by the ranks that meshed them, and one index written by rank 0 once
+/// every rank has succeeded.
 #pragma once
 
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/core/triangle_mesh.hpp>
-#include <pdd/io/vtu.hpp>
+#include <pdd/io/piece_files.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mpi/detail/wire.hpp>
 
@@ -20,21 +21,23 @@
 namespace pdd::mpi {
 
 /// A MeshSink for pdd::mpi::mesh_subdomains: on every rank, consume() writes the subdomain's
-/// file exactly as pdd::vtu_directory_sink does (`<directory>/subdomain_<id>.vtu`, atomically,
-/// the same bytes), and finish(), which mesh_subdomains calls once every rank has succeeded,
-/// writes the index `<directory>/<index_name>` over all n subdomains on rank 0 only (the same
-/// bytes as the threaded run's index). remove_written() removes this rank's files after a
-/// failed run (nothing of it is left when every rank calls it).
+/// file exactly as pdd::piece_directory_sink does (`<directory>/subdomain_<id>.vtu` or `.pddm`,
+/// atomically, the same bytes), and finish(), which mesh_subdomains calls once every rank has
+/// succeeded, writes the index `<directory>/<index_name>` (mesh.pvtu or mesh.pddi by default)
+/// over all n subdomains on rank 0 only (the same bytes as the threaded run's index).
+/// remove_written() removes this rank's files after a failed run (nothing of it is left when
+/// every rank calls it).
 /// Thread-safety: consume() may run concurrently (different files); the rest from one thread.
-class vtu_directory_sink {
+class piece_directory_sink {
 public:
   static constexpr bool retains_meshes = false;
 
-  /// Creates `directory` if needed (every rank: the ranks share a file system).
+  /// Creates `directory` if needed (every rank: the ranks share a file system). An empty
+  /// `index_name`: pdd::piece_index_name(format).
   /// \throws pdd::error when it cannot be created.
-  vtu_directory_sink(MPI_Comm comm, std::filesystem::path directory,
-                     std::string index_name = "mesh.pvtu")
-      : files_(std::move(directory), std::move(index_name)) {
+  piece_directory_sink(MPI_Comm comm, std::filesystem::path directory,
+                       piece_format format = piece_format::vtu, std::string index_name = {})
+      : files_(std::move(directory), format, std::move(index_name)) {
     detail::check(MPI_Comm_rank(comm, &rank_), "MPI_Comm_rank");
   }
 
@@ -49,29 +52,25 @@ public:
     if (rank_ != 0) return;
     std::vector<std::string> names(n_);
     for (index_t i = 0; i < n_; ++i)
-      names[i] = pdd::vtu_directory_sink::piece_name(i);
-    write_pvtu(files_.index_path(), names);
+      names[i] = pdd::piece_directory_sink::piece_name(i, files_.format());
+    write_piece_index(files_.index_path(), names, files_.format());
   }
 
   /// Removes the pieces this rank has written (best effort: the run has failed already).
-  void remove_written() const {
-    for (std::size_t i = 0; i < files_.pieces().size(); ++i)
-      if (files_.pieces()[i].delivered) {
-        std::error_code ec;
-        std::filesystem::remove(
-            files_.directory() / pdd::vtu_directory_sink::piece_name(static_cast<index_t>(i)), ec);
-      }
-  }
+  void remove_written() const { files_.remove_written(); }
 
   std::filesystem::path index_path() const { return files_.index_path(); }
   /// The sizes of the pieces this rank wrote, by subdomain id.
   const std::vector<piece_counts>& pieces() const noexcept { return files_.pieces(); }
 
 private:
-  pdd::vtu_directory_sink files_;
+  pdd::piece_directory_sink files_;
   int rank_ = 0;
   index_t n_ = 0;
 };
-static_assert(MeshSink<vtu_directory_sink>);
+static_assert(MeshSink<piece_directory_sink>);
+
+/// The VTU piece_directory_sink (its default format).
+using vtu_directory_sink = piece_directory_sink;
 
 } // namespace pdd::mpi
