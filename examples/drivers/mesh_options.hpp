@@ -42,39 +42,28 @@ struct mesh_options {
   /// --format: the per-subdomain output's file format (vtu: .vtu + mesh.pvtu; binary: .pddm +
   /// mesh.pddi)
   pdd::piece_format format = pdd::piece_format::vtu;
-  bool no_disk_check = false;                      ///< --no-disk-check
+  bool no_disk_check = false; ///< --no-disk-check
+  /// --kernel: cgal (pdd::cgal::mesher, the default) or native (pdd::native::mesher)
+  std::string kernel = "cgal";
   std::optional<std::uintmax_t> assume_free_bytes; ///< --assume-free-bytes (for tests)
 };
 
-/// Registers the shared options on `app` (`threads_help` describes --threads) and returns the
-/// --output-per-subdomain option (pdd-mesh excludes other outputs with it).
-inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
-                                     const std::string& threads_help) {
-  app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
-  app.add_option("--min-angle", o.min_angle, "minimum angle in degrees (default 20.7)")
-      ->check(CLI::Range(1.0, 34.0));
-  app.add_option("--max-area", o.max_area, "maximum triangle area")->check(CLI::PositiveNumber);
-  app.add_option("--sizing", o.sizing.expression,
+/// Registers the sizing fields' options (--sizing, --background, --area-grid) on `app`.
+inline void add_sizing_options(CLI::App& app, sizing_sources& sizing) {
+  app.add_option("--sizing", sizing.expression,
                  "maximum triangle area as an expression of x and y (muParser), e.g. "
                  "\"1e-4*(1+10*x^2)\"");
-  app.add_option("--background", o.sizing.background_mesh,
+  app.add_option("--background", sizing.background_mesh,
                  "background mesh FILE.node (+ FILE.ele): area per vertex as the .node's one "
                  "attribute, or per triangle in FILE.area")
       ->check(CLI::ExistingFile);
-  app.add_option("--area-grid", o.sizing.area_grid, "structured area grid file (see README)")
+  app.add_option("--area-grid", sizing.area_grid, "structured area grid file (see README)")
       ->check(CLI::ExistingFile);
-  app.add_option("--subdomains", o.subdomains,
-                 "number of subdomains (1: monolithic kernel; default: automatic)")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
-  app.add_option("--max-triangles", o.max_triangles,
-                 "refuse, before meshing, a run whose estimated triangle count exceeds N "
-                 "(default: what fits in physical memory)")
-      ->check(CLI::PositiveNumber);
-  app.add_option("--threads", o.threads, threads_help)->check(CLI::Range(1u, 4096u));
-  app.add_option("--r1", o.gradation.r1,
-                 "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
-  app.add_option("--r2", o.gradation.r2,
-                 "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
+}
+
+/// Registers --output-per-subdomain, its --format and the disk-space check's options on `app`;
+/// returns the --output-per-subdomain option.
+inline CLI::Option* add_output_options(CLI::App& app, mesh_options& o) {
   auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
                              "write one file per subdomain and an index (mesh.pvtu or mesh.pddi, "
                              "see --format) into DIR (nothing is kept in memory)");
@@ -93,6 +82,35 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
                  "for tests: let the disk-space check take this many bytes as the free space")
       ->excludes(no_check)
       ->needs(per);
+  return per;
+}
+
+/// Registers the shared options on `app` (`threads_help` describes --threads) and returns the
+/// --output-per-subdomain option (pdd-mesh excludes other outputs with it).
+inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
+                                     const std::string& threads_help) {
+  app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
+  app.add_option("--min-angle", o.min_angle, "minimum angle in degrees (default 20.7)")
+      ->check(CLI::Range(1.0, 34.0));
+  app.add_option("--max-area", o.max_area, "maximum triangle area")->check(CLI::PositiveNumber);
+  add_sizing_options(app, o.sizing);
+  app.add_option("--subdomains", o.subdomains,
+                 "number of subdomains (1: monolithic kernel; default: automatic)")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
+  app.add_option("--max-triangles", o.max_triangles,
+                 "refuse, before meshing, a run whose estimated triangle count exceeds N "
+                 "(default: what fits in physical memory)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--threads", o.threads, threads_help)->check(CLI::Range(1u, 4096u));
+  app.add_option("--r1", o.gradation.r1,
+                 "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
+  app.add_option("--r2", o.gradation.r2,
+                 "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
+  app.add_option("--kernel", o.kernel,
+                 "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
+                 "(pdd's triangle-array mesher)")
+      ->check(CLI::IsMember({"cgal", "native"}));
+  auto* per = add_output_options(app, o);
   app.add_option("--stats", o.stats, "write statistics as JSON to this file");
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
   return per;

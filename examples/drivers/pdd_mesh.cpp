@@ -61,7 +61,6 @@ struct cli_options : pdd::drivers::mesh_options {
   std::string output, svg, svg_histogram;
   std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
   bool verify = false, compare_monolithic = false;
-  std::string kernel = "cgal"; ///< --kernel: cgal (pdd::cgal::mesher) or native
 };
 
 /// Stage lines and the progress bar on stderr, drawn only when stderr is a terminal.
@@ -413,10 +412,6 @@ int main(int argc, char** argv) {
   CLI::App app{"pdd-mesh: guaranteed-quality 2D Delaunay meshing of a Triangle .poly domain"};
   auto* per = add_mesh_options(app, o, "threads (default: all cores)");
   app.add_option("-o,--output", o.output, "output mesh: .vtu, .node (+.ele/.poly), .msh, .svg");
-  app.add_option("--kernel", o.kernel,
-                 "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
-                 "(pdd's triangle-array mesher)")
-      ->check(CLI::IsMember({"cgal", "native"}));
   auto* ver =
       app.add_flag("--verify", o.verify, "verify Delaunay property, conformity, quality and area");
   app.add_flag("--compare-monolithic", o.compare_monolithic,

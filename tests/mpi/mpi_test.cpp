@@ -30,22 +30,23 @@ std::string shell_quoted(const fs::path& p) {
   return q;
 }
 
-/// The options of a case: input, --max-area and --subdomains.
+/// The options of a case: input, --max-area, --subdomains and the kernel.
 struct mesh_case {
   fs::path input;
   std::string max_area;
   int subdomains;
+  std::string kernel = "cgal";
 };
 
 std::string case_options(const mesh_case& c) {
   return shell_quoted(c.input) + " --max-area " + c.max_area + " --subdomains " +
-         std::to_string(c.subdomains) + " --quiet";
+         std::to_string(c.subdomains) + " --kernel " + c.kernel + " --quiet";
 }
 
 /// The threaded run's folder (made once per case): pdd-mesh on 2 threads.
 fs::path threaded_output(const mesh_case& c, const std::string& name) {
   static std::map<std::string, fs::path> done;
-  const std::string key = name + "_n" + std::to_string(c.subdomains);
+  const std::string key = name + "_n" + std::to_string(c.subdomains) + "_" + c.kernel;
   if (done.count(key)) return done[key];
   const fs::path dir = pdd::test::fresh_dir("threaded_" + key);
   const auto r = run_command(std::string(PDD_MESH_EXE) + " " + case_options(c) +
@@ -88,7 +89,7 @@ void expect_bitwise_as_threaded(const mesh_case& c, const std::string& name) {
     const auto got = nlohmann::json::parse(pdd::test::read_text(dir / "stats.json"));
     EXPECT_EQ(got["ranks"], ranks) << what;
     EXPECT_EQ(got["subdomains"], c.subdomains) << what;
-    for (const char* key : {"triangles", "min_angle_deg", "max_angle_deg", "max_ratio",
+    for (const char* key : {"kernel", "triangles", "min_angle_deg", "max_angle_deg", "max_ratio",
                             "max_area_ratio", "angle_histogram_deg", "shielded_triangles"})
       EXPECT_EQ(got[key], expected[key]) << what << ": " << key;
     std::size_t meshings = 0;
@@ -109,6 +110,12 @@ TEST(MpiKey, EverySubdomainFileBitwiseAsThreaded) {
 TEST(MpiPipe, EverySubdomainFileBitwiseAsThreaded) {
   for (const int n : {16, 64})
     expect_bitwise_as_threaded({data / "pipe.poly", "2e-3", n}, "pipe");
+}
+
+// The native kernel (--kernel native) through MPI: every piece bitwise the threaded run's.
+TEST(MpiNative, EverySubdomainFileBitwiseAsThreaded) {
+  expect_bitwise_as_threaded({data / "key.poly", "2e-3", 16, "native"}, "key_native");
+  expect_bitwise_as_threaded({data / "pipe.poly", "2e-3", 64, "native"}, "pipe_native");
 }
 
 // Texas: input angles down to 7.29 deg, shielded (dissertation ch. 8).
@@ -168,7 +175,8 @@ TEST(MpiPipe, BinaryPiecesBitwiseAsThreaded) {
     const auto r = run_command(mpiexec(ranks) + PDD_MESH_MPI_EXE + " " + options +
                                " --threads 1 --output-per-subdomain " + shell_quoted(dir / out));
     ASSERT_EQ(r.code, 0) << r.output;
-    EXPECT_EQ(expect_same_files(dir / "threaded", dir / out, std::string("binary P=").append(out)), 17u);
+    EXPECT_EQ(expect_same_files(dir / "threaded", dir / out, std::string("binary P=").append(out)),
+              17u);
   }
 }
 

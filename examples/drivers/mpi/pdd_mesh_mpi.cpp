@@ -8,6 +8,7 @@
 //            [--max-area A] [--sizing EXPR] [--background FILE.node] [--area-grid FILE]
 //            [--subdomains N] [--threads T] [--stats FILE.json] [--quiet]
 //            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
+//            [--kernel cgal|native]
 //
 // Every subdomain file is bitwise the one `pdd-mesh ... --output-per-subdomain DIR` writes with
 // the same N. Exit codes as pdd-mesh (exit_code.hpp), the same on every rank; rank 0 prints the
@@ -19,6 +20,8 @@
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/poly.hpp>
+#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
 #include <pdd/mesh/sinks.hpp>
@@ -50,17 +53,23 @@ namespace {
 
 using namespace pdd::drivers; // exit codes, mesh_options
 
-/// Everything one run produces, filled phase by phase (each rank its own).
-struct mpi_run {
+/// This rank of the MPI job.
+struct mpi_job {
   MPI_Comm comm = MPI_COMM_WORLD;
   int rank = 0, ranks = 1;
+};
+
+/// Everything one run produces, filled phase by phase (each rank its own).
+/// \tparam M the kernel (--kernel).
+template <class M>
+struct mpi_run : mpi_job {
   unsigned threads = 1;     ///< this rank's meshing threads
   unsigned all_threads = 1; ///< the meshing threads of all ranks
   pdd::pslg domain;
   pdd::generate_options options;
   pdd::min_sizing<pdd::uniform_sizing, pdd::any_sizing> sizing{pdd::uniform_sizing{}, {}};
   std::string sizing_kind;
-  std::optional<pdd::pipeline<>> path; ///< decomposition and decoupling path
+  std::optional<pdd::pipeline<M>> path; ///< decomposition and decoupling path
   pdd::mpi::distributed_meshing_statistics meshing;
   pdd::mesh_statistics st;       ///< rank 0: over all ranks
   pdd::shielding_statistics sst; ///< rank 0: over all ranks
@@ -81,7 +90,8 @@ unsigned threads_per_rank(MPI_Comm comm, unsigned asked) {
 /// Phase 1, on every rank alike: reads and validates the input and builds the decoupled
 /// decomposition. An automatic N is planned for the threads of all ranks together (the same on
 /// every rank, and the N `pdd-mesh --threads <all ranks' threads>` plans).
-void build_path(const mesh_options& o, mpi_run& r) {
+template <class M>
+void build_path(const mesh_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
   r.domain = pdd::read_poly(o.input);
   static_cast<void>(pdd::analyze(r.domain)); // validates, throws geometry_error
@@ -96,16 +106,16 @@ void build_path(const mesh_options& o, mpi_run& r) {
 
 /// N == 1 (asked, or the automatic plan's fallback): rank 0 meshes the whole domain as
 /// pdd-mesh does; the other ranks wait.
-template <class Sink>
-void mesh_whole_on_rank_0(mpi_run& r, Sink& sink) {
+template <class M, class Sink>
+void mesh_whole_on_rank_0(mpi_run<M>& r, Sink& sink) {
   if (r.rank == 0) r.path->mesh(sink);
 }
 
 /// Gathers every rank's statistics to rank 0 and combines them in rank order (extremes,
 /// counts and the histogram are those of the threaded run; the area sum may differ in its
 /// last bits).
-template <class Measured>
-void gather_statistics(const Measured& measured, mpi_run& r) {
+template <class M, class Measured>
+void gather_statistics(const Measured& measured, mpi_run<M>& r) {
   struct totals {
     pdd::mesh_statistics st;
     pdd::shielding_statistics sst;
@@ -125,7 +135,8 @@ void gather_statistics(const Measured& measured, mpi_run& r) {
 /// Phase 2: checks the free disk space (rank 0, before any file), then meshes the subdomains
 /// over the ranks into per-subdomain files of the --format (each checked before it is
 /// written); a failure on any rank removes every rank's files.
-void mesh_distributed(const mesh_options& o, mpi_run& r) {
+template <class M>
+void mesh_distributed(const mesh_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
   // rank 0 decides whether the output fits on disk; every rank ends with its verdict
   pdd::mpi::collectively(r.comm, [&] {
@@ -141,8 +152,8 @@ void mesh_distributed(const mesh_options& o, mpi_run& r) {
     } else {
       const pdd::meshing_options mo{r.options.criteria, r.options.decoupling.max_repairs,
                                     r.options.sizing};
-      r.meshing = pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), mo, pdd::cgal::mesher{},
-                                            r.threads, measured);
+      r.meshing =
+          pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), mo, M{}, r.threads, measured);
     }
   } catch (const std::exception&) {
     files->remove_written(); // no index was written: leave no pieces of a failed run either
@@ -153,7 +164,8 @@ void mesh_distributed(const mesh_options& o, mpi_run& r) {
 }
 
 /// The --stats JSON (rank 0).
-nlohmann::json statistics_json(const mesh_options& o, const mpi_run& r) {
+template <class M>
+nlohmann::json statistics_json(const mesh_options& o, const mpi_run<M>& r) {
   const pdd::generate_statistics& gs = r.path->statistics();
   nlohmann::json j;
   j["input"] = o.input;
@@ -161,6 +173,7 @@ nlohmann::json statistics_json(const mesh_options& o, const mpi_run& r) {
   j["subdomains"] = gs.subdomains;
   j["ranks"] = r.ranks;
   j["threads_per_rank"] = r.threads;
+  j["kernel"] = o.kernel;
   j["k"] = gs.k;
   j["split_points"] = gs.split_points;
   j["sizing"] = r.sizing_kind;
@@ -183,7 +196,8 @@ nlohmann::json statistics_json(const mesh_options& o, const mpi_run& r) {
   return j;
 }
 
-int run(const mesh_options& o, mpi_run& r) {
+template <class M>
+int run(const mesh_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
   r.threads = threads_per_rank(r.comm, o.threads);
   MPI_Allreduce(&r.threads, &r.all_threads, 1, MPI_UNSIGNED, MPI_SUM, r.comm);
@@ -215,7 +229,15 @@ int run(const mesh_options& o, mpi_run& r) {
 
 /// Parses the options (rank 0 prints help and usage errors) and runs; every rank returns the
 /// same exit code, rank 0 prints the error.
-int parse_and_run(int argc, char** argv, mpi_run& r) {
+/// Runs with kernel M (the run's pipeline is gone before MPI_Finalize).
+template <class M>
+int run_with(const mesh_options& o, const mpi_job& job) {
+  mpi_run<M> r;
+  static_cast<mpi_job&>(r) = job;
+  return run(o, r);
+}
+
+int parse_and_run(int argc, char** argv, const mpi_job& job) {
   mesh_options o;
   CLI::App app{"pdd-mesh-mpi: pdd-mesh --output-per-subdomain over the ranks of an MPI job"};
   add_mesh_options(app, o, "meshing threads per rank (default: the node's cores / its ranks)")
@@ -223,11 +245,14 @@ int parse_and_run(int argc, char** argv, mpi_run& r) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = r.rank == 0 ? app.exit(e) : e.get_exit_code();
+    const int rc = job.rank == 0 ? app.exit(e) : e.get_exit_code();
     return rc == 0 ? ok : usage;
   }
-  auto body = [&] { return run(o, r); };
-  if (r.rank == 0) return run_reporting_errors("pdd-mesh-mpi", o.input, body);
+  auto body = [&] {
+    return o.kernel == "native" ? run_with<pdd::native::mesher>(o, job)
+                                : run_with<pdd::cgal::mesher>(o, job);
+  };
+  if (job.rank == 0) return run_reporting_errors("pdd-mesh-mpi", o.input, body);
   try {
     return body();
   } catch (const pdd::error& e) {
@@ -242,18 +267,17 @@ int parse_and_run(int argc, char** argv, mpi_run& r) {
 int main(int argc, char** argv) {
   int provided = 0;
   MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
-  mpi_run r;
-  MPI_Comm_rank(r.comm, &r.rank);
-  MPI_Comm_size(r.comm, &r.ranks);
+  mpi_job job;
+  MPI_Comm_rank(job.comm, &job.rank);
+  MPI_Comm_size(job.comm, &job.ranks);
   int rc = internal;
   if (provided < MPI_THREAD_FUNNELED) {
-    if (r.rank == 0)
+    if (job.rank == 0)
       std::fprintf(stderr, "pdd-mesh-mpi: internal error: the MPI library does not support "
                            "MPI_THREAD_FUNNELED\n");
   } else {
-    rc = parse_and_run(argc, argv, r);
+    rc = parse_and_run(argc, argv, job);
   }
-  r.path.reset();
   MPI_Finalize();
   return rc;
 }
