@@ -6,9 +6,11 @@
 #include <pdd/io/piece_files.hpp>
 #include <pdd/io/vtu.hpp>
 
-#include <gtest/gtest.h>
-
+#include "mesh_compare.hpp"
+#include "random_soup.hpp"
 #include "test_files.hpp"
+
+#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
@@ -24,35 +26,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A random triangle soup (the format does not care about geometry) with vertex markers mostly
-/// 0 and runs of triangle markers, both signs.
-pdd::triangle_mesh random_mesh(unsigned seed, std::size_t nv, std::size_t nt) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> coord(-1e3, 1e3);
-  std::uniform_int_distribution<pdd::index_t> vertex(0, static_cast<pdd::index_t>(nv - 1));
-  pdd::triangle_mesh m;
-  for (std::size_t i = 0; i < nv; ++i) {
-    m.vertices.push_back({coord(rng), coord(rng)});
-    m.vertex_markers.push_back(i % 7 == 0 ? static_cast<int>(i % 5) - 2 : 0);
-  }
-  for (std::size_t t = 0; t < nt; ++t) {
-    m.triangles.push_back({vertex(rng), vertex(rng), vertex(rng)});
-    m.triangle_markers.push_back(static_cast<int>(seed) - static_cast<int>(t / 10));
-  }
-  return m;
-}
+using pdd::test::random_triangle_soup;
 
 void expect_bitwise_equal(const pdd::triangle_mesh& a, const pdd::triangle_mesh& b) {
-  ASSERT_EQ(a.vertices.size(), b.vertices.size());
-  for (std::size_t i = 0; i < a.vertices.size(); ++i) {
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.vertices[i].x),
-              std::bit_cast<std::uint64_t>(b.vertices[i].x));
-    EXPECT_EQ(std::bit_cast<std::uint64_t>(a.vertices[i].y),
-              std::bit_cast<std::uint64_t>(b.vertices[i].y));
-  }
-  EXPECT_EQ(a.triangles, b.triangles);
-  EXPECT_EQ(a.vertex_markers, b.vertex_markers);
-  EXPECT_EQ(a.triangle_markers, b.triangle_markers);
+  EXPECT_TRUE(pdd::test::bitwise_equal(a, b));
 }
 
 std::string error_of(const fs::path& p) {
@@ -86,14 +63,14 @@ void expect_refused(const fs::path& p, const std::string& what) {
 TEST(BinaryMesh, RoundTripIsBitwise) {
   std::size_t checked = 0;
   for (const std::size_t nv : {1u, 2u, 3u, 5u, 130u, 1000u, 70000u}) {
-    const auto m = random_mesh(static_cast<unsigned>(nv), nv, nv * 2 + 1);
+    const auto m = random_triangle_soup(static_cast<unsigned>(nv), nv, nv * 2 + 1);
     const auto p = pdd::test::temp_path("rt_" + std::to_string(nv) + ".pddm");
     pdd::write_binary_mesh(p, m);
     expect_bitwise_equal(pdd::read_binary_mesh(p), m);
     ++checked;
   }
   // odd doubles: signed zero, subnormals, extremes
-  pdd::triangle_mesh odd = random_mesh(7, 6, 4);
+  pdd::triangle_mesh odd = random_triangle_soup(7, 6, 4);
   odd.vertices[0] = {-0.0, std::numeric_limits<double>::denorm_min()};
   odd.vertices[1] = {std::numeric_limits<double>::max(), -std::numeric_limits<double>::min()};
   odd.vertex_markers[2] = std::numeric_limits<int>::min();
@@ -102,7 +79,7 @@ TEST(BinaryMesh, RoundTripIsBitwise) {
   pdd::write_binary_mesh(p, odd);
   expect_bitwise_equal(pdd::read_binary_mesh(p), odd);
   // no markers: read back as zeros; an empty mesh
-  pdd::triangle_mesh bare = random_mesh(9, 10, 12);
+  pdd::triangle_mesh bare = random_triangle_soup(9, 10, 12);
   bare.vertex_markers.clear();
   bare.triangle_markers.clear();
   pdd::write_binary_mesh(p, bare);
@@ -144,7 +121,7 @@ TEST(BinaryMesh, LayoutIsTheDocumentedOne) {
 }
 
 TEST(BinaryMesh, RefusesTruncatedExtendedAndTamperedFilesNamingThem) {
-  const auto m = random_mesh(3, 300, 500);
+  const auto m = random_triangle_soup(3, 300, 500);
   const auto p = pdd::test::temp_path("bad.pddm");
   pdd::write_binary_mesh(p, m);
   const std::string good = read_bytes(p);
@@ -194,7 +171,7 @@ std::string with_checksum(std::string bytes) {
 // Bad content behind a valid checksum: a NaN coordinate, a vertex index past n (9-bit indices
 // for 300 vertices reach 511), non-zero padding bits, a marker run past its count.
 TEST(BinaryMesh, RefusesBadContentBehindAValidChecksum) {
-  const auto m = random_mesh(4, 300, 501); // 1503 indices x 9 bits: 5 padding bits
+  const auto m = random_triangle_soup(4, 300, 501); // 1503 indices x 9 bits: 5 padding bits
   const auto p = pdd::test::temp_path("content.pddm");
   pdd::write_binary_mesh(p, m);
   const std::string good = read_bytes(p);
@@ -225,7 +202,7 @@ TEST(BinaryMesh, RefusesBadContentBehindAValidChecksum) {
 // bytes anywhere, header included; every file is either read (then every index is a vertex) or
 // refused with pdd::error naming it. Never a crash or a read past the end (ASan in CI).
 TEST(BinaryMesh, RandomChangesAreReadOrRefusedCleanly) {
-  const auto m = random_mesh(5, 200, 350);
+  const auto m = random_triangle_soup(5, 200, 350);
   const auto p = pdd::test::temp_path("mutated.pddm");
   pdd::write_binary_mesh(p, m);
   const std::string good = read_bytes(p);

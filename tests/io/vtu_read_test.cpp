@@ -3,9 +3,11 @@
 #include <pdd/io/vtu.hpp>
 #include <pdd/io/vtu_read.hpp>
 
-#include <gtest/gtest.h>
-
+#include "mesh_compare.hpp"
+#include "random_soup.hpp"
 #include "test_files.hpp"
+
+#include <gtest/gtest.h>
 
 #include <bit>
 #include <cmath>
@@ -19,22 +21,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/// A random triangle soup with markers (the reader does not care about geometry).
-pdd::triangle_mesh random_mesh(unsigned seed, std::size_t nv, std::size_t nt) {
-  std::mt19937 rng(seed);
-  std::uniform_real_distribution<double> coord(-1e3, 1e3);
-  std::uniform_int_distribution<pdd::index_t> vertex(0, static_cast<pdd::index_t>(nv - 1));
-  pdd::triangle_mesh m;
-  for (std::size_t i = 0; i < nv; ++i) {
-    m.vertices.push_back({coord(rng), coord(rng)});
-    m.vertex_markers.push_back(static_cast<int>(i % 5));
-  }
-  for (std::size_t t = 0; t < nt; ++t) {
-    m.triangles.push_back({vertex(rng), vertex(rng), vertex(rng)});
-    m.triangle_markers.push_back(static_cast<int>(seed + t));
-  }
-  return m;
-}
+using pdd::test::random_triangle_soup;
 
 std::string error_of(const fs::path& p) {
   try {
@@ -49,26 +36,17 @@ std::string error_of(const fs::path& p) {
 
 TEST(ReadVtu, RoundTripIsBitwise) {
   for (unsigned seed = 1; seed <= 20; ++seed) {
-    const auto m = random_mesh(seed, 1 + seed * 7, seed * 11);
+    const auto m = random_triangle_soup(seed, 1 + seed * 7, seed * 11);
     const auto p = pdd::test::temp_path(std::to_string(seed).append(".vtu"));
     pdd::write_vtu(p, m);
     const pdd::triangle_mesh r = pdd::read_vtu(p);
-    ASSERT_EQ(r.vertices.size(), m.vertices.size());
-    for (std::size_t i = 0; i < m.vertices.size(); ++i) {
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(r.vertices[i].x),
-                std::bit_cast<std::uint64_t>(m.vertices[i].x));
-      EXPECT_EQ(std::bit_cast<std::uint64_t>(r.vertices[i].y),
-                std::bit_cast<std::uint64_t>(m.vertices[i].y));
-    }
-    EXPECT_EQ(r.triangles, m.triangles);
-    EXPECT_EQ(r.vertex_markers, m.vertex_markers);
-    EXPECT_EQ(r.triangle_markers, m.triangle_markers);
+    EXPECT_TRUE(pdd::test::bitwise_equal(r, m)) << seed;
     EXPECT_TRUE(r.segments.empty());
   }
 }
 
 TEST(ReadVtu, TruncationsAreCleanErrorsNamingTheFile) {
-  const auto m = random_mesh(3, 9, 12);
+  const auto m = random_triangle_soup(3, 9, 12);
   const auto whole = pdd::test::temp_path("whole.vtu");
   pdd::write_vtu(whole, m);
   const std::string bytes = pdd::test::read_text(whole);
@@ -90,7 +68,7 @@ TEST(ReadVtu, TruncationsAreCleanErrorsNamingTheFile) {
 }
 
 TEST(ReadVtu, TamperedFilesAreRefusedWithTheReason) {
-  const auto m = random_mesh(4, 6, 5);
+  const auto m = random_triangle_soup(4, 6, 5);
   const auto p = pdd::test::temp_path("t.vtu");
   pdd::write_vtu(p, m);
   const std::string good = pdd::test::read_text(p);
