@@ -99,7 +99,7 @@ void build_path(const mesh_options& o, mpi_run<M>& r) {
   r.options.threads = o.subdomains > 0 ? r.threads : r.all_threads;
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
   r.path.emplace(r.domain, r.options);
-  r.path->check_memory<pdd::counting_sink>();
+  r.path->template check_memory<pdd::counting_sink>();
   r.path->decouple();
   r.t_path = pdd::seconds_since(t0);
 }
