@@ -28,7 +28,8 @@ struct mesh_options {
   std::size_t subdomains = 0;
   std::size_t max_triangles = 0; ///< 0: what fits in memory
   unsigned threads = 0;
-  pdd::gradation_options gradation; // --r1, --r2 (Algorithm 7.1 of the graded method)
+  pdd::gradation_options gradation;      // --r1, --r2 (Algorithm 7.1 of the graded method)
+  std::string geometric_sizing = "auto"; // --geometric-sizing (Algorithm 8.3)
   bool quiet = false;
 };
 
@@ -61,6 +62,10 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
                  "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
   app.add_option("--r2", o.gradation.r2,
                  "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
+  app.add_option("--geometric-sizing", o.geometric_sizing,
+                 "decouple with the sizing function built from the geometry (Algorithm 8.3): "
+                 "auto (default: when a feature is smaller than the mesh), on, off")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
   auto* per = app.add_option("--output-per-subdomain", o.per_subdomain_dir,
                              "write one .vtu per subdomain and an index mesh.pvtu into DIR "
                              "(nothing is kept in memory)");
@@ -80,6 +85,9 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
   g.threads = o.threads;
   g.max_triangles = o.max_triangles;
   g.gradation = o.gradation;
+  g.geometric_sizing = o.geometric_sizing == "on"    ? pdd::geometric_sizing_mode::on
+                       : o.geometric_sizing == "off" ? pdd::geometric_sizing_mode::off
+                                                     : pdd::geometric_sizing_mode::automatic;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
 }

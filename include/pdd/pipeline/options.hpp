@@ -29,6 +29,18 @@ struct planning_options {
   double max_split_point_fraction = 0.05;
 };
 
+/// Whether the pipeline builds the sizing function from the geometry (dissertation 8.2,
+/// Algorithm 8.3, iterated with the decomposition: pdd::geometric_decompose) and decouples
+/// with it (generate_options::geometric_sizing).
+enum class geometric_sizing_mode {
+  /// When N > 1 and some feature is smaller than the mesh (lfs_min of the domain below the
+  /// area term (1/2) sqrt(m / sqrt2) of Proposition 20, m the smallest area bound), so that
+  /// the uniform path's k would be held down by it everywhere.
+  automatic,
+  on,  ///< whenever N > 1 (and no k_scale / k_override)
+  off, ///< never (the uniform or graded path as before)
+};
+
 /// The decoupling path's own knobs (the criteria and the sizing are generate_options'): k of
 /// Theorem 15 and the invariance repairs of the meshing stage.
 struct decoupling_path_options {
@@ -83,6 +95,14 @@ struct generate_options {
   std::size_t max_triangles = 0;
   /// Automatic N (subdomains == 0); a requested N is always used.
   planning_options planning;
+  /// The geometric path (Algorithm 8.3 and the loop of pdd::geometric_decompose): the field
+  /// F <= min(criteria.max_area, sizing) it builds drives the graded decoupling path and the
+  /// kernel. Not with input angles below 60 deg (shields) for now; generate_statistics::path
+  /// and plan_reason say what was used and why.
+  geometric_sizing_mode geometric_sizing = geometric_sizing_mode::automatic;
+  /// With the geometric path and automatic N: fall back to N = 1 when its estimated
+  /// over-refinement (the integral of 1 / F over that of 1 / f, minus 1) exceeds this.
+  double max_geometric_over_refinement = 0.25;
 };
 
 /// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own
