@@ -8,13 +8,13 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/pipeline/system.hpp>
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
-#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/pipeline.hpp>
+#include <pdd/pipeline/system.hpp>
 
 #include <chrono>
 #include <utility>
@@ -37,8 +37,9 @@ struct generate_result {
 /// \tparam M a DelaunayMesher (default pdd::cgal::mesher). \tparam P a GraphPartitioner
 /// (default METIS when found). \tparam E an Executor (default pdd::tbb_executor).
 /// \pre `domain` is valid (pdd::validate). Input angles < 60 deg are shielded (dissertation
-/// 8.1, pdd::shield / pdd::shield_decomposition): each becomes one shielded triangle of the
-/// mesh, with the input angle as its smallest angle; every other triangle meets the criteria.
+/// 8.1, pdd::shield / pdd::shield_decomposition; with a sizing field and N > 1 per subdomain
+/// with Theorem 26's l_i, pdd::shield_graded_decomposition): each becomes one shielded triangle of
+/// the mesh, with the input angle as its smallest angle; every other triangle meets the criteria.
 /// \throws pdd::geometry_error (invalid domain), pdd::limit_error (the mesh would not fit in
 /// memory: the message has the estimate), pdd::decomposition_error (MADD; also, up front,
 /// options.madd.min_separator_angle_deg outside [60, 90)), pdd::meshing_error (kernel, with

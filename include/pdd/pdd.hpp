@@ -78,11 +78,13 @@
 
 // level 4: shielding
 #include <pdd/shielding/apply_shields.hpp>
+#include <pdd/shielding/graded_shields.hpp>
 #include <pdd/shielding/shield.hpp>
 #include <pdd/shielding/shield_decomposition.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 #include <pdd/shielding/shielded_domain.hpp>
+#include <pdd/shielding/subdomain_shields.hpp>
 
 // level 5: decoupling
 #include <pdd/decoupling/decouple.hpp>

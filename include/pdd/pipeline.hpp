@@ -28,6 +28,7 @@
 #include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
+#include <pdd/pipeline/detail/graded_path.hpp>
 #include <pdd/pipeline/detail/memory_check.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
@@ -94,11 +95,10 @@ public:
                         : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads,
                                                          options_.planning)
                                   : 1;
-    // the graded method (Algorithm 7.1 + graded path) where no shields are needed (input
-    // angles >= 60 deg, Ruppert's condition) and k is neither scaled nor overridden
+    // the graded method (Algorithm 7.1 + graded path with Theorem 26's shields) where k is
+    // neither scaled nor overridden
     graded_plan_ = options_.sizing && stats_.subdomains > 1 &&
-                   !(options_.decoupling.k_override > 0.0) && options_.decoupling.k_scale == 1.0 &&
-                   min_domain_angle_deg(domain_) >= 60.0;
+                   !(options_.decoupling.k_override > 0.0) && options_.decoupling.k_scale == 1.0;
     geometric_plan_ = detail::choose_geometric_path(
         domain_, options_, std::min(options_.criteria.max_area, sizing_min_), stats_);
   }
@@ -159,17 +159,10 @@ public:
     decompose();
     const auto t0 = std::chrono::steady_clock::now();
     if (stats_.subdomains > 1) {
-      // Algorithm 8.2: shield the small angles of every subdomain; k then comes from the
-      // shielded subdomains D_i' (Theorem 24 (3)).
+      // Algorithm 8.2: shield the small angles of every subdomain (graded: Theorem 26's l_i per
+      // subdomain; uniform: one bound); k then comes from the shielded subdomains D_i'.
       std::vector<subdomain_shields> shields;
-      if (detail::has_small_angles(decomposition_))
-        shields = shield_decomposition(decomposition_, decoupling_criteria().max_area, executor_,
-                                       shield_length_cap(unshielded_k()));
-      if (!(options_.sizing && try_graded_path(shields.empty()))) {
-        decoupling_options dopt{decoupling_criteria(), options_.decoupling.k_override,
-                                options_.decoupling.k_scale};
-        decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
-      }
+      if (!(options_.sizing && try_graded_path(shields))) shields = decouple_uniform();
       decoupled_decomposition_.shields.resize(shields.size());
       for (std::size_t s = 0; s < shields.size(); ++s)
         decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);
@@ -284,8 +277,7 @@ private:
     stats_.gradation_capped = gradation_.capped;
   }
 
-  /// The geometric path (detail::run_geometric): its decomposition replaces MADD's, its F is
-  /// the field of the graded path and the kernel (the user's is kept for a fallback).
+  /// The geometric path (detail::run_geometric): its decomposition and F replace MADD's and f.
   void adopt_geometric(const madd_options& mo) {
     geometric_decomposition gd =
         detail::run_geometric(domain_, std::move(decomposition_), options_, stats_.subdomains, mo,
@@ -317,29 +309,37 @@ private:
                                 decoupling_criteria());
   }
 
-  /// Builds the graded path into decoupled_decomposition_ (k_i lowered where relation 7.1
-  /// needs it); false (with the reason in the statistics) when shields are needed, or k is
-  /// overridden or scaled.
-  bool try_graded_path(bool no_shields) {
-    if (!no_shields) {
-      stats_.graded_fallback = "small input angles are shielded (the graded path has no shields)";
-      return false;
-    }
+  /// The uniform path: the small angles shielded with the domain-wide bound
+  /// (pdd::shield_decomposition, l capped by shield_length_cap of the unshielded k), then
+  /// pdd::decouple into decoupled_decomposition_. Returns the shields.
+  std::vector<subdomain_shields> decouple_uniform() {
+    std::vector<subdomain_shields> shields;
+    if (detail::has_small_angles(decomposition_))
+      shields = shield_decomposition(decomposition_, decoupling_criteria().max_area, executor_,
+                                     shield_length_cap(unshielded_k()));
+    decoupling_options dopt{decoupling_criteria(), options_.decoupling.k_override,
+                            options_.decoupling.k_scale};
+    decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
+    return shields;
+  }
+
+  /// Builds the graded path with shields (detail::build_graded_path: Theorem 26's l_i per
+  /// subdomain, then Theorem 22's path) into decoupled_decomposition_ and `shields`; false
+  /// (with the reason in the statistics, nothing changed) when k is overridden or scaled.
+  bool try_graded_path(std::vector<subdomain_shields>& shields) {
     if (options_.decoupling.k_override > 0.0 || options_.decoupling.k_scale != 1.0) {
       stats_.graded_fallback = "decoupling.k_override or decoupling.k_scale set";
       return false;
     }
-    std::vector<double> lo;
-    if (gradation_.bounds.size() == decomposition_.subdomains.size())
-      for (const sizing_bounds& b : gradation_.bounds)
-        lo.push_back(b.lo);
-    else
-      lo = detail::subdomain_sizing_minima(decomposition_, options_.sizing, executor_);
-    graded_decoupling g = decouple_graded(decomposition_, options_.criteria, lo, executor_);
-    decoupled_decomposition_ = std::move(g.path);
-    stats_.subdomain_k = std::move(g.subdomain_k);
-    stats_.k_ratio_max = g.k_ratio_max;
-    stats_.lowered_k = g.lowered_k;
+    const std::vector<double> lo = detail::subdomain_area_bounds(
+        gradation_, decomposition_, options_.sizing, options_.criteria.max_area, executor_);
+    detail::graded_path_build b =
+        detail::build_graded_path(decomposition_, options_.criteria, lo, executor_);
+    shields = std::move(b.shields);
+    decoupled_decomposition_ = std::move(b.graded.path);
+    stats_.subdomain_k = std::move(b.graded.subdomain_k);
+    stats_.k_ratio_max = b.graded.k_ratio_max;
+    stats_.lowered_k = b.graded.lowered_k;
     stats_.graded_path = true;
     return true;
   }

@@ -3,8 +3,8 @@
 // closed-loop ../shared/data geometry, N in {1, 16, 64}, 1 and 2 threads: verified (exact
 // Delaunay, conformity, area <= F at every centroid, quality), Theorem 22 on every separator
 // segment (k_j / k_i < sqrt 3 and sqrt 3 |E| / (2 k_j) >= nu > |E| / (2 k_i)), bitwise
-// identical across thread counts. Domains with input angles below 60 degrees take the uniform
-// path with shields (counted, and still verified).
+// identical across thread counts. Domains with input angles below 60 degrees take the graded
+// path too, with Theorem 26's shields (graded_shields_pipeline_test.cpp checks them).
 #include <pdd/generate.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/geometry/properties.hpp>
@@ -85,17 +85,14 @@ TEST(GradedPipeline, DomainsVerifiedTheorem22AndThreadIndependent) {
       EXPECT_EQ(rep.area_violations, 0u);
       if (n > 1) {
         EXPECT_GE(st.subdomains, n);
-        if (st.graded_path) {
-          ++graded;
-          EXPECT_TRUE(st.gradation_controlled);
-          pdd::pipeline<> p(nd.domain, o);
-          const pdd::decoupled_decomposition& dd = p.decouple();
-          ASSERT_EQ(p.statistics().subdomain_k.size(), dd.num_subdomains());
-          expect_theorem_22(dd, p.statistics().subdomain_k);
-        } else {
-          ++shielded;
-          EXPECT_GT(st.shielded_triangles, 0u) << st.graded_fallback;
-        }
+        ASSERT_TRUE(st.graded_path) << st.graded_fallback;
+        ++graded;
+        shielded += st.shielded_triangles > 0 ? 1 : 0;
+        EXPECT_TRUE(st.gradation_controlled);
+        pdd::pipeline<> p(nd.domain, o);
+        const pdd::decoupled_decomposition& dd = p.decouple();
+        ASSERT_EQ(p.statistics().subdomain_k.size(), dd.num_subdomains());
+        expect_theorem_22(dd, p.statistics().subdomain_k);
       }
       o.threads = 2;
       EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, pdd::generate(nd.domain, o).mesh));

@@ -90,7 +90,70 @@ inline std::size_t lower_k_for_relation_7_1(const std::vector<path_edge>& path,
     lowered += k[s] < initial[s] ? 1 : 0;
   return lowered;
 }
+
+/// The per-subdomain values of the graded path: k_i, lfs_min(D_i), the shortest separator
+/// segment L_i of D_i, and how many k_i relation 7.1 lowered.
+struct graded_k_values {
+  std::vector<double> k, lfs, shortest;
+  std::size_t lowered = 0;
+};
+
+/// k_i = decoupling_parameter(lfs_min(D_i), L_i, criteria with max_area min(criteria.max_area,
+/// area_lower_bound[i])) for every subdomain of d (path: its separator segments), lowered for
+/// relation 7.1 when `lower` (lower_k_for_relation_7_1). Complexity: lfs_min per subdomain on
+/// the executor, plus O((m + |path|) log m).
+template <Executor E>
+graded_k_values compute_graded_k(const decomposition& d, const std::vector<path_edge>& path,
+                                 const mesh_criteria& criteria,
+                                 const std::vector<double>& area_lower_bound, const E& executor,
+                                 bool lower) {
+  const std::size_t m = d.subdomains.size();
+  graded_k_values v;
+  v.shortest.assign(m, std::numeric_limits<double>::infinity());
+  for (const path_edge& e : path)
+    for (const index_t s : e.sides)
+      v.shortest[s] = std::min(v.shortest[s], e.length);
+  v.lfs = subdomain_lfs(d, executor);
+  v.k.resize(m);
+  for (std::size_t s = 0; s < m; ++s) {
+    mesh_criteria c = criteria;
+    c.max_area = std::min(criteria.max_area, area_lower_bound[s]);
+    v.k[s] = decoupling_parameter(v.lfs[s], v.shortest[s], c);
+  }
+  if (lower) v.lowered = lower_k_for_relation_7_1(path, v.k);
+  return v;
+}
+
+/// Throws pdd::decoupling_error unless there is one area bound per subdomain of d.
+inline void check_area_bounds(const decomposition& d, const std::vector<double>& bounds,
+                              const char* what) {
+  if (bounds.size() != d.subdomains.size())
+    throw decoupling_error(std::string(what) + ": " + std::to_string(bounds.size()) +
+                           " area bounds for " + std::to_string(d.subdomains.size()) +
+                           " subdomains");
+}
 } // namespace detail
+
+/// The graded decoupling parameters k_i of decomposition d as pdd::decouple_graded computes
+/// them (Proposition 20 with Theorem 15's terms, lowered where relation 7.1 needs it when
+/// o.lower_k), without building the path. The pipeline caps the graded shields' l_i with them
+/// (pdd::shield_graded_decomposition): shielding comes before the path, on the decomposition.
+/// \param area_lower_bound as for pdd::decouple_graded.
+/// 	hrows pdd::decoupling_error for a malformed decomposition or a wrong number of bounds;
+/// pdd::geometry_error from lfs_min. Complexity: lfs_min per subdomain on the executor, plus
+/// O((m + |path|) log m). Thread-safety: reentrant.
+template <Executor E = sequential_executor>
+std::vector<double> graded_subdomain_k(const decomposition& d, const mesh_criteria& criteria,
+                                       const std::vector<double>& area_lower_bound,
+                                       const E& executor = {},
+                                       const graded_decoupling_options& o = {}) {
+  detail::check_decomposition(d);
+  detail::check_area_bounds(d, area_lower_bound, "graded_subdomain_k");
+  std::vector<path_edge> path;
+  std::vector<std::vector<index_t>> loop_edge_path;
+  detail::collect_path_edges(d, path, loop_edge_path);
+  return detail::compute_graded_k(d, path, criteria, area_lower_bound, executor, o.lower_k).k;
+}
 
 /// Refines the separators of d into a graded decoupling path: every separator segment E
 /// between D_i and D_j (k_i <= k_j) is split into the smallest nu with |E| / nu < 2 k_i
@@ -115,25 +178,16 @@ graded_decoupling decouple_graded(decomposition d, const mesh_criteria& criteria
                                   const std::vector<double>& area_lower_bound,
                                   const E& executor = {}, const graded_decoupling_options& o = {}) {
   detail::check_decomposition(d);
-  const std::size_t m = d.subdomains.size();
-  if (area_lower_bound.size() != m)
-    throw decoupling_error("decouple_graded: " + std::to_string(area_lower_bound.size()) +
-                           " area bounds for " + std::to_string(m) + " subdomains");
+  detail::check_area_bounds(d, area_lower_bound, "decouple_graded");
   graded_decoupling g;
   decoupled_decomposition& dd = g.path;
   detail::collect_path_edges(d, dd.path, dd.loop_edge_path);
-  std::vector<double> shortest(m, std::numeric_limits<double>::infinity());
-  for (const path_edge& e : dd.path)
-    for (const index_t s : e.sides)
-      shortest[s] = std::min(shortest[s], e.length);
-  const std::vector<double> lfs = detail::subdomain_lfs(d, executor);
-  g.subdomain_k.resize(m);
-  for (std::size_t s = 0; s < m; ++s) {
-    mesh_criteria c = criteria;
-    c.max_area = std::min(criteria.max_area, area_lower_bound[s]);
-    g.subdomain_k[s] = decoupling_parameter(lfs[s], shortest[s], c);
-  }
-  if (o.lower_k) g.lowered_k = detail::lower_k_for_relation_7_1(dd.path, g.subdomain_k);
+  detail::graded_k_values kv =
+      detail::compute_graded_k(d, dd.path, criteria, area_lower_bound, executor, o.lower_k);
+  g.subdomain_k = std::move(kv.k);
+  g.lowered_k = kv.lowered;
+  const std::vector<double>& lfs = kv.lfs;
+  const std::vector<double>& shortest = kv.shortest;
   dd.lfs_min = *std::min_element(lfs.begin(), lfs.end());
   dd.shortest_separator = *std::min_element(shortest.begin(), shortest.end());
   dd.k = *std::min_element(g.subdomain_k.begin(), g.subdomain_k.end());

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <pdd/core/mesh_criteria.hpp>
+#include <pdd/decoupling/geometric_decompose.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -62,8 +63,9 @@ struct generate_options {
   /// decomposition (pdd::gradation_controlled_decompose, Algorithm 7.1 with `gradation`) and
   /// the graded decoupling path (pdd::decouple_graded: k_i per subdomain from m(D_i), lowered
   /// where relation 7.1 needs it, Theorem 22); the subdomains are meshed largest expected
-  /// work first (Algorithm 7.2). Where input angles below 60 degrees need shields, or k_scale
-  /// or k_override are set, N-way MADD and the interim uniform path are used instead: k from
+  /// work first (Algorithm 7.2). Input angles below 60 degrees are shielded per subdomain with
+  /// Theorem 26's l_i from m(D_i) (pdd::shield_graded_decomposition). Where k_scale or
+  /// k_override are set, N-way MADD and the interim uniform path are used instead: k from
   /// the field's minimum over the domain's bounding box (generate_statistics::graded_fallback
   /// says why). The kernel meshes each subdomain with the field itself either way.
   any_sizing sizing{};
@@ -97,12 +99,15 @@ struct generate_options {
   planning_options planning;
   /// The geometric path (Algorithm 8.3 and the loop of pdd::geometric_decompose): the field
   /// F <= min(criteria.max_area, sizing) it builds drives the graded decoupling path and the
-  /// kernel. Not with input angles below 60 deg (shields) for now; generate_statistics::path
-  /// and plan_reason say what was used and why.
+  /// kernel (small input angles: the graded path's shields, Theorem 26, from m_F(D_i));
+  /// generate_statistics::path and plan_reason say what was used and why.
   geometric_sizing_mode geometric_sizing = geometric_sizing_mode::automatic;
   /// With the geometric path and automatic N: fall back to N = 1 when its estimated
   /// over-refinement (the integral of 1 / F over that of 1 / f, minus 1) exceeds this.
   double max_geometric_over_refinement = 0.25;
+  /// Bounds of the geometric path's loop (target over-refinement, rounds, subdomains; the
+  /// pipeline raises max_subdomains to at least 4 N).
+  geometric_decompose_options geometric_loop{};
 };
 
 /// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own

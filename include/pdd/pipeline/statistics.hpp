@@ -46,14 +46,15 @@ struct generate_statistics {
   decomposition_statistics decomposition; ///< MADD's measurements (N > 1)
   std::vector<subdomain_report> per_subdomain;
   /// With a sizing field and N > 1: true when the graded decoupling path (decouple_graded,
-  /// one k_i per subdomain) was used, false when relation 7.1 failed somewhere (or shields,
-  /// decoupling.k_scale or decoupling.k_override were in play) and the interim uniform path with k
-  /// from the field's minimum was used instead (graded_fallback says why).
+  /// one k_i per subdomain; small input angles shielded per subdomain with Theorem 26's l_i)
+  /// was used, false when decoupling.k_scale or decoupling.k_override were in play and the
+  /// interim uniform path with k from the field's minimum was used instead (graded_fallback
+  /// says why).
   bool graded_path = false;
   std::string graded_fallback;
   std::vector<double> subdomain_k; ///< k_i per subdomain (graded path)
   double k_ratio_max = 0.0;        ///< max k_j / k_i across interfaces (graded path)
-  /// With a sizing field and N > 1 when no shields, k_scale or k_override are in play: the
+  /// With a sizing field and N > 1 when neither k_scale nor k_override is in play: the
   /// decomposition is Algorithm 7.1's (gradation_controlled_decompose) and these are measured
   /// on it: max M / m over subdomains (Condition 1), max m_i / m_j over separators
   /// (Condition 2), the subdomains / neighbour pairs left non-acceptable by the termination

@@ -9,7 +9,6 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
 #include <pdd/geometry/lfs.hpp>
-#include <pdd/geometry/properties.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -71,9 +70,6 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
   if (o.decoupling.k_override > 0.0 || o.decoupling.k_scale != 1.0)
     return no("decoupling.k_override or k_scale set: the uniform path");
   if (!std::isfinite(area_min)) return no("no area bound: Algorithm 8.3 scales a bounded field");
-  if (min_domain_angle_deg(domain) < 60.0)
-    return no("input angles below 60 deg need shields, which the geometric (graded) path does "
-              "not build yet");
   if (o.geometric_sizing == geometric_sizing_mode::on) {
     st.plan_reason = "geometric sizing on";
     return true;
@@ -96,7 +92,8 @@ run_geometric(const pslg& domain, decomposition initial, const generate_options&
   gradation_options go = o.gradation;
   go.min_subdomains = n;
   if (o.subdomains == 0) go.max_subdomain_triangles = o.planning.target_subdomain_triangles;
-  const geometric_decompose_options gdo{.max_subdomains = std::max<std::size_t>(4096, 4 * n)};
+  geometric_decompose_options gdo = o.geometric_loop;
+  gdo.max_subdomains = std::max<std::size_t>(gdo.max_subdomains, 4 * n);
   return geometric_decompose(domain, std::move(initial), o.sizing, o.criteria.max_area, go, mo, gdo,
                              partitioner, executor);
 }
