@@ -111,6 +111,7 @@ TEST(GeometricPipeline, RequestedNAndTheModes) {
         << small.statistics().plan_reason;
   }
   o.subdomains = 16;
+  o.geometric_sizing = pdd::geometric_sizing_mode::on;
   const run on = mesh_and_verify(g, o);
   EXPECT_EQ(on.stats.path, "geometric");
   EXPECT_GE(on.stats.subdomains, 16u);
@@ -125,6 +126,8 @@ TEST(GeometricPipeline, RequestedNAndTheModes) {
   pdd::pslg square;
   square.add_loop(std::vector<point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0);
   o.geometric_sizing = pdd::geometric_sizing_mode::automatic;
+  o.subdomains = 0;
+  o.criteria.max_area = 1e-6; // automatic N > 1
   pdd::pipeline<> plain(square, o);
   plain.decouple();
   EXPECT_EQ(plain.statistics().path, "uniform");

@@ -34,7 +34,8 @@ struct planning_options {
 /// Algorithm 8.3, iterated with the decomposition: pdd::geometric_decompose) and decouples
 /// with it (generate_options::geometric_sizing).
 enum class geometric_sizing_mode {
-  /// When N > 1 and some feature is smaller than the mesh (lfs_min of the domain below the
+  /// With criteria.max_area alone (no field) and automatic N, when N > 1 and some feature is
+  /// smaller than the mesh (lfs_min of the domain below the
   /// area term (1/2) sqrt(m / sqrt2) of Proposition 20, m the smallest area bound), so that
   /// the uniform path's k would be held down by it everywhere.
   automatic,

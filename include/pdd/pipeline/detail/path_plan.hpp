@@ -74,6 +74,11 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
     st.plan_reason = "geometric sizing on";
     return true;
   }
+  // automatic: the uniform --max-area with automatic N (a field or a requested N keep their
+  // graded or uniform path unless geometric sizing is on)
+  if (o.sizing)
+    return no("a sizing field: the graded path (geometric sizing auto needs a uniform bound)");
+  if (o.subdomains != 0) return no("a requested N: geometric sizing auto plans automatic N only");
   const double lfs = lfs_min(domain), term = 0.5 * std::sqrt(area_min / std::numbers::sqrt2);
   const std::string numbers =
       "lfs_min " + number_text(lfs) + ", (1/2) sqrt(m / sqrt2) " + number_text(term);
