@@ -37,7 +37,8 @@ struct mesh_options {
   std::size_t subdomains = 0;
   std::size_t max_triangles = 0; ///< 0: what fits in memory
   unsigned threads = 0;
-  pdd::gradation_options gradation; // --r1, --r2 (Algorithm 7.1 of the graded method)
+  pdd::gradation_options gradation;      // --r1, --r2 (Algorithm 7.1 of the graded method)
+  std::string geometric_sizing = "auto"; // --geometric-sizing (Algorithm 8.3)
   bool quiet = false;
   /// --format: the per-subdomain output's file format (vtu: .vtu + mesh.pvtu; binary: .pddm +
   /// mesh.pddi)
@@ -85,6 +86,23 @@ inline CLI::Option* add_output_options(CLI::App& app, mesh_options& o) {
   return per;
 }
 
+/// Registers the method's options on `app`: the graded method's --r1 and --r2, the geometric
+/// sizing (--geometric-sizing) and the kernel (--kernel).
+inline void add_method_options(CLI::App& app, mesh_options& o) {
+  app.add_option("--r1", o.gradation.r1,
+                 "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
+  app.add_option("--r2", o.gradation.r2,
+                 "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
+  app.add_option("--geometric-sizing", o.geometric_sizing,
+                 "decouple with the sizing function built from the geometry (Algorithm 8.3): "
+                 "auto (default: when a feature is smaller than the mesh), on, off")
+      ->check(CLI::IsMember({"auto", "on", "off"}));
+  app.add_option("--kernel", o.kernel,
+                 "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
+                 "(pdd's triangle-array mesher)")
+      ->check(CLI::IsMember({"cgal", "native"}));
+}
+
 /// Registers the shared options on `app` (`threads_help` describes --threads) and returns the
 /// --output-per-subdomain option (pdd-mesh excludes other outputs with it).
 inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
@@ -102,14 +120,7 @@ inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,
                  "(default: what fits in physical memory)")
       ->check(CLI::PositiveNumber);
   app.add_option("--threads", o.threads, threads_help)->check(CLI::Range(1u, 4096u));
-  app.add_option("--r1", o.gradation.r1,
-                 "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
-  app.add_option("--r2", o.gradation.r2,
-                 "graded method: Condition 2 bound m_i/m_j across separators (default 1.5, < 3)");
-  app.add_option("--kernel", o.kernel,
-                 "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
-                 "(pdd's triangle-array mesher)")
-      ->check(CLI::IsMember({"cgal", "native"}));
+  add_method_options(app, o);
   auto* per = add_output_options(app, o);
   app.add_option("--stats", o.stats, "write statistics as JSON to this file");
   app.add_flag("-q,--quiet", o.quiet, "print nothing but errors");
@@ -127,6 +138,9 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
   g.threads = o.threads;
   g.max_triangles = o.max_triangles;
   g.gradation = o.gradation;
+  g.geometric_sizing = o.geometric_sizing == "on"    ? pdd::geometric_sizing_mode::on
+                       : o.geometric_sizing == "off" ? pdd::geometric_sizing_mode::off
+                                                     : pdd::geometric_sizing_mode::automatic;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
 }

@@ -7,6 +7,7 @@
 //            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
 //            [--sizing EXPR] [--background FILE.node] [--area-grid FILE] [--max-triangles N]
 //            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
+//            [--geometric-sizing auto|on|off]
 //
 // Exit codes: 0 ok, 1 bad input (also a run refused up front: its estimated size exceeds
 // --max-triangles or memory, or its per-subdomain output the free disk space), 2 usage, 3
@@ -248,6 +249,11 @@ void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) 
   j["estimated_triangles"] = gs.estimated_triangles; // the up-front estimate
   j["subdomains"] = gs.subdomains;
   j["threads"] = gs.threads;
+  j["path"] = gs.path; // monolithic, uniform, graded or geometric
+  j["plan_reason"] = gs.plan_reason;
+  j["sizing_rounds"] = gs.sizing_rounds; // the geometric path's loop (Algorithm 8.3)
+  j["estimated_over_refinement"] = gs.estimated_over_refinement;
+  j["sizing_round_used"] = gs.sizing_round_used;
   j["kernel"] = o.kernel;
   j["k"] = gs.k;
   j["split_points"] = gs.split_points;

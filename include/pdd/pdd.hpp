@@ -58,10 +58,12 @@
 #include <pdd/sizing/analytic.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 #include <pdd/sizing/background_mesh.hpp>
+#include <pdd/sizing/geometric_bound.hpp>
 #include <pdd/sizing/grid.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>
 #include <pdd/sizing/mesh_size_estimate.hpp>
 #include <pdd/sizing/min_sizing.hpp>
+#include <pdd/sizing/piecewise_scaled.hpp>
 #include <pdd/sizing/regional.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
@@ -90,6 +92,8 @@
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
+#include <pdd/decoupling/geometric_decompose.hpp>
+#include <pdd/decoupling/geometric_sizing.hpp>
 #include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/decoupling/invariance.hpp>

@@ -30,6 +30,7 @@
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/pipeline/detail/graded_path.hpp>
 #include <pdd/pipeline/detail/memory_check.hpp>
+#include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
 #include <pdd/pipeline/detail/sizing_plan.hpp>
 #include <pdd/pipeline/options.hpp>
@@ -98,6 +99,8 @@ public:
     // neither scaled nor overridden
     graded_plan_ = options_.sizing && stats_.subdomains > 1 &&
                    !(options_.decoupling.k_override > 0.0) && options_.decoupling.k_scale == 1.0;
+    geometric_plan_ = detail::choose_geometric_path(
+        domain_, options_, std::min(options_.criteria.max_area, sizing_min_), stats_);
   }
 
   /// N, the number of subdomains this pipeline uses.
@@ -141,6 +144,7 @@ public:
       else
         decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
       stats_.subdomains = decomposition_.subdomains.size();
+      if (geometric_plan_) adopt_geometric(mo);
     }
     stats_.timings.decompose = seconds_since(t0);
     decomposed_ = true;
@@ -170,8 +174,10 @@ public:
       if (options_.subdomains == 0 &&
           static_cast<double>(stats_.split_points) >
               options_.planning.max_split_point_fraction * stats_.estimated_triangles)
-        fall_back_to_whole_domain();
+        fall_back_to_whole_domain(detail::split_point_reason(
+            stats_.split_points, stats_.estimated_triangles, options_.planning));
     }
+    stats_.path = detail::path_name(stats_, geometric_plan_);
     stats_.timings.decouple = seconds_since(t0);
     decoupled_ = true;
     return decoupled_decomposition_;
@@ -271,6 +277,19 @@ private:
     stats_.gradation_capped = gradation_.capped;
   }
 
+  /// The geometric path (detail::run_geometric): its decomposition and F replace MADD's and f.
+  void adopt_geometric(const madd_options& mo) {
+    geometric_decomposition gd =
+        detail::run_geometric(domain_, std::move(decomposition_), options_, stats_.subdomains, mo,
+                              partitioner_, executor_);
+    decomposition_ = std::move(gd.parts);
+    stats_.subdomains = decomposition_.subdomains.size();
+    user_sizing_ = options_.sizing;
+    options_.sizing = *gd.sizing.field;
+    graded_plan_ = true;
+    if (detail::record_geometric(gd, options_, stats_, gradation_)) fall_back_to_whole_domain("");
+  }
+
   /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i through
   /// pdd::shield_length_cap, see pdd::shield_decomposition).
   double unshielded_k() const {
@@ -333,7 +352,11 @@ private:
     return c;
   }
 
-  void fall_back_to_whole_domain() {
+  /// N = 1 after all (`why`, if not empty, becomes the plan's reason); the user's field again.
+  void fall_back_to_whole_domain(const std::string& why) {
+    if (!why.empty()) stats_.plan_reason = why;
+    if (geometric_plan_) options_.sizing = user_sizing_;
+    geometric_plan_ = false;
     stats_.monolithic_fallback = true;
     stats_.subdomains = 1;
     stats_.graded_path = false;
@@ -364,6 +387,9 @@ private:
   bool decomposed_ = false, decoupled_ = false;
   /// The graded method's decomposition (Algorithm 7.1) is used (see the constructor).
   bool graded_plan_ = false;
+  /// The geometric path is planned / used (options_.sizing: its F, user_sizing_: the user's).
+  bool geometric_plan_ = false;
+  any_sizing user_sizing_;
   gradation_report gradation_;
   decomposition decomposition_;
   decoupled_decomposition decoupled_decomposition_;

@@ -24,6 +24,7 @@ TEST(LongShielded, BahamasDecoupledVerifiedAndThreadIndependent) {
   o.subdomains = 2;
   o.threads = 1;
   o.check_memory = false;
+  o.geometric_sizing = pdd::geometric_sizing_mode::off; // the uniform path (geometric_bahamas_test)
   const pdd::generate_result one = pdd::generate(g, o);
   EXPECT_EQ(one.statistics.subdomains, 2u);
   EXPECT_GT(one.statistics.split_points, 1000000u); // k = lfs_min: the uniform method's cost

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <pdd/core/mesh_criteria.hpp>
+#include <pdd/decoupling/geometric_decompose.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -27,6 +28,19 @@ struct planning_options {
   /// (k <= lfs_min): the uniform method then refines every separator to that scale and would
   /// over-refine the mesh (dissertation 6.3; the graded method of ch. 7 is the remedy).
   double max_split_point_fraction = 0.05;
+};
+
+/// Whether the pipeline builds the sizing function from the geometry (dissertation 8.2,
+/// Algorithm 8.3, iterated with the decomposition: pdd::geometric_decompose) and decouples
+/// with it (generate_options::geometric_sizing).
+enum class geometric_sizing_mode {
+  /// With criteria.max_area alone (no field) and automatic N, when N > 1 and some feature is
+  /// smaller than the mesh (lfs_min of the domain below the
+  /// area term (1/2) sqrt(m / sqrt2) of Proposition 20, m the smallest area bound), so that
+  /// the uniform path's k would be held down by it everywhere.
+  automatic,
+  on,  ///< whenever N > 1 (and no k_scale / k_override)
+  off, ///< never (the uniform or graded path as before)
 };
 
 /// The decoupling path's own knobs (the criteria and the sizing are generate_options'): k of
@@ -84,6 +98,17 @@ struct generate_options {
   std::size_t max_triangles = 0;
   /// Automatic N (subdomains == 0); a requested N is always used.
   planning_options planning;
+  /// The geometric path (Algorithm 8.3 and the loop of pdd::geometric_decompose): the field
+  /// F <= min(criteria.max_area, sizing) it builds drives the graded decoupling path and the
+  /// kernel (small input angles: the graded path's shields, Theorem 26, from m_F(D_i));
+  /// generate_statistics::path and plan_reason say what was used and why.
+  geometric_sizing_mode geometric_sizing = geometric_sizing_mode::automatic;
+  /// With the geometric path and automatic N: fall back to N = 1 when its estimated
+  /// over-refinement (the integral of 1 / F over that of 1 / f, minus 1) exceeds this.
+  double max_geometric_over_refinement = 0.25;
+  /// Bounds of the geometric path's loop (target over-refinement, rounds, subdomains; the
+  /// pipeline raises max_subdomains to at least 4 N).
+  geometric_decompose_options geometric_loop{};
 };
 
 /// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own

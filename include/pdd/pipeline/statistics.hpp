@@ -67,6 +67,17 @@ struct generate_statistics {
   bool gradation_capped = false;
   /// Subdomains whose k_i the graded path lowered so that relation 7.1 holds.
   std::size_t lowered_k = 0;
+  /// The path taken: "monolithic" (N = 1), "uniform" (one k, Theorem 15), "graded" (k_i from
+  /// the user's field, Theorem 22) or "geometric" (k_i from Algorithm 8.3's F, Theorem 22).
+  std::string path;
+  /// Why that path (the plan's rule and its numbers, or the fallback's).
+  std::string plan_reason;
+  /// The geometric path: rounds of decomposition + Algorithm 8.3 run (pdd::geometric_decompose),
+  /// the estimated over-refinement of each (integral of 1 / F over that of 1 / f, minus 1) and
+  /// the round used.
+  std::size_t sizing_rounds = 0;
+  std::vector<double> estimated_over_refinement;
+  std::size_t sizing_round_used = 0;
 };
 
 } // namespace pdd

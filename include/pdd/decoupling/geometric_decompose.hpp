@@ -1,0 +1,206 @@
+/// \file geometric_decompose.hpp
+/// pdd::geometric_decompose: decomposition and the sizing function built from the geometry,
+/// iterated (issue 17 item 2): Algorithm 8.3 on a fixed decomposition shrinks F over a whole
+/// subdomain that holds a tiny feature (and, by R2, its neighbours); the loop decomposes again,
+/// graded towards such features (Algorithm 7.1), until the over-refinement F causes is small.
+#pragma once
+
+#include <pdd/concepts/executor.hpp>
+#include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/bbox.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/decoupling/geometric_sizing.hpp>
+#include <pdd/geometry/feature_gap.hpp>
+#include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/gradation_control.hpp>
+#include <pdd/madd/gradation_options.hpp>
+#include <pdd/madd/madd_options.hpp>
+#include <pdd/parallel/sequential_executor.hpp>
+#include <pdd/partition/default_partitioner.hpp>
+#include <pdd/sizing/any_sizing.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <utility>
+#include <vector>
+
+namespace pdd {
+
+/// Bounds of the loop (designated initialisers welcome).
+struct geometric_decompose_options {
+  /// Stop when the estimated over-refinement (geometric_sizing_result::over_refinement) is at
+  /// most this.
+  double target_over_refinement = 0.03;
+  /// At most this many rounds of decomposition + Algorithm 8.3 (the first is the given one).
+  unsigned max_rounds = 4;
+  /// At most this many subdomains in a refined round (Algorithm 7.1's max_subdomains).
+  std::size_t max_subdomains = 4096;
+  /// Tiny features the first refined round grades towards; x8 per further round.
+  std::size_t first_feature_cap = 64;
+  /// The driver's growth of the feature size per unit of distance in the first refined round
+  /// (pdd::feature_driven_sizing); divided by 4 in each further round.
+  double first_slope = 0.25;
+};
+
+/// One round of the loop.
+struct geometric_round {
+  std::size_t subdomains = 0;
+  std::size_t features = 0;      ///< tiny-feature vertices the decomposition was graded towards
+  double slope = 0.0;            ///< the driver's slope (0: the initial decomposition)
+  double over_refinement = 0.0;  ///< estimated (geometric_sizing_result::over_refinement)
+  double expected_triangles = 0; ///< under F
+  bool capped = false;           ///< Algorithm 7.1 stopped at max_subdomains
+};
+
+/// The loop's result: the chosen round's decomposition and F, and every round.
+struct geometric_decomposition {
+  decomposition parts;
+  geometric_sizing_result sizing;
+  std::vector<geometric_round> rounds;
+  std::size_t chosen = 0; ///< index in rounds of the decomposition returned
+};
+
+/// The driving field of a refined round: min(max_area, f(x), min over tiny-feature vertices v
+/// of 4 sqrt2 (gap(v)/2 + slope |x - v|)^2), the area bound (relation 8.12 with e = lfs) of a
+/// feature size growing by `slope` per unit of distance from v. Why slope < 1 (lfs itself is
+/// 1-Lipschitz): Algorithm 7.1 makes subdomains a fixed fraction of their distance from v, and
+/// Algorithm 8.3 bounds F by lfs_min(D_i), which the subdomain's own size bounds; where the
+/// driver reaches f the subdomains must already be several mesh edges wide, or F stays below
+/// f there and the R2 propagation carries that far out. A smaller slope reaches f farther out.
+/// range(box) is exact for the distance term (nearest and farthest point of the box from v)
+/// and f's own range otherwise. It only shapes the decomposition; F's guarantees come from
+/// Algorithm 8.3 with the exact lfs_min(D_i). Thread-safety: const and shared.
+class feature_driven_sizing {
+public:
+  feature_driven_sizing(any_sizing base, double max_area, std::vector<point> at,
+                        std::vector<double> half_gap, double slope)
+      : data_(std::make_shared<data>(
+            data{std::move(base), max_area, std::move(at), std::move(half_gap), slope})) {}
+  double area_at(const point& p) const {
+    double v = std::min(data_->max_area, data_->base.area_at(p));
+    for (std::size_t i = 0; i < data_->at.size(); ++i)
+      v = std::min(v, bound(i, std::hypot(p.x - data_->at[i].x, p.y - data_->at[i].y)));
+    return v;
+  }
+  sizing_bounds range(const bbox& b) const {
+    sizing_bounds r = data_->base.range(b);
+    r = {std::min(r.lo, data_->max_area), std::min(r.hi, data_->max_area)};
+    for (std::size_t i = 0; i < data_->at.size(); ++i) {
+      const point q = data_->at[i];
+      const double dx = std::max({b.xmin - q.x, 0.0, q.x - b.xmax});
+      const double dy = std::max({b.ymin - q.y, 0.0, q.y - b.ymax});
+      const double fx = std::max(std::abs(q.x - b.xmin), std::abs(q.x - b.xmax));
+      const double fy = std::max(std::abs(q.y - b.ymin), std::abs(q.y - b.ymax));
+      r.lo = std::min(r.lo, bound(i, std::hypot(dx, dy)));
+      r.hi = std::min(r.hi, bound(i, std::hypot(fx, fy)));
+    }
+    return r;
+  }
+  static constexpr const char* kind() noexcept { return "feature_driven"; }
+
+private:
+  /// 4 sqrt2 e^2 with e = gap(v_i)/2 + slope * distance.
+  double bound(std::size_t i, double distance) const {
+    const double e = data_->half_gap[i] + data_->slope * distance;
+    return 4.0 * std::numbers::sqrt2 * e * e;
+  }
+  struct data {
+    any_sizing base;
+    double max_area;
+    std::vector<point> at;
+    std::vector<double> half_gap;
+    double slope;
+  };
+  std::shared_ptr<const data> data_;
+};
+
+namespace detail {
+/// The input vertices whose own feature bound 4 sqrt2 (gap/2)^2 lies below min(max_area, f)
+/// there (a feature smaller than the mesh), the `cap` most binding first (ratio, then id).
+inline feature_driven_sizing tiny_feature_driver(const pslg& g, const any_sizing& f,
+                                                 double max_area, std::size_t cap, double slope,
+                                                 std::size_t& found) {
+  const feature_gap_field gaps(g);
+  std::vector<std::pair<double, index_t>> binding;
+  for (index_t v = 0; v < g.vertices.size(); ++v) {
+    const double gap = gaps.vertex_gap(v);
+    if (!std::isfinite(gap) || !(gap > 0.0)) continue;
+    const double own = std::numbers::sqrt2 * gap * gap; // 4 sqrt2 (gap / 2)^2
+    const double user = std::min(max_area, f.area_at(g.vertices[v]));
+    if (own < user) binding.emplace_back(own / user, v);
+  }
+  std::sort(binding.begin(), binding.end());
+  binding.resize(std::min(binding.size(), cap));
+  found = binding.size();
+  std::vector<point> at;
+  std::vector<double> half_gap;
+  for (const auto& [ratio, v] : binding) {
+    at.push_back(g.vertices[v]);
+    half_gap.push_back(gaps.vertex_gap(v) / 2.0);
+  }
+  return {f, max_area, std::move(at), std::move(half_gap), slope};
+}
+} // namespace detail
+
+/// The loop of decomposition and Algorithm 8.3 (issue 17 item 2), starting from `initial` (the
+/// pipeline's decomposition: N-way MADD, or Algorithm 7.1 for a field):
+///  round 1: F = Algorithm 8.3 on `initial` (pdd::geometric_sizing); its over-refinement is
+///    the integral of 1 / (0.656 F) over that of 1 / (0.656 f), minus 1;
+///  while it exceeds o.target_over_refinement and rounds remain: the domain is decomposed
+///    again by Algorithm 7.1 (pdd::gradation_controlled_decompose, at least `go.min_subdomains`
+///    subdomains, at most o.max_subdomains, no termination minimum) driven by
+///    pdd::feature_driven_sizing over the tiny features (cap: o.first_feature_cap, x8 per
+///    round; slope o.first_slope, / 4 per round): subdomains grow with the distance from each
+///    tiny feature, so the feature's own small F stays in a small subdomain and the R2 steps
+///    of Algorithm 8.3 fit the grading; each round grades more slowly (more, larger
+///    subdomains where the driver meets f); then Algorithm 8.3 again. A round that reached
+///    o.max_subdomains ends the loop (a slower grading needs still more subdomains).
+/// The round with the fewest expected triangles under F is returned (rounds lists all).
+/// \param go Algorithm 7.1's options as the pipeline sets them (R1, R2, T, min_subdomains);
+/// max_area, min_subdomain_triangles and max_subdomains are set here.
+/// \throws as pdd::geometric_sizing and pdd::gradation_controlled_decompose.
+/// Deterministic for every executor and thread count.
+template <GraphPartitioner P = default_partitioner, Executor E = sequential_executor>
+geometric_decomposition geometric_decompose(const pslg& g, decomposition initial,
+                                            const any_sizing& f, double max_area,
+                                            gradation_options go, const madd_options& mo,
+                                            const geometric_decompose_options& o = {},
+                                            const P& partitioner = {}, const E& executor = {}) {
+  geometric_decomposition out;
+  out.sizing = geometric_sizing(initial, f, max_area, go.r2, executor);
+  out.parts = std::move(initial);
+  out.rounds.push_back({out.parts.subdomains.size(), 0, 0.0, out.sizing.over_refinement(),
+                        out.sizing.expected_triangles_F(), false});
+  std::size_t cap = o.first_feature_cap;
+  double slope = o.first_slope;
+  go.max_area = max_area;
+  go.min_subdomain_triangles = 0.0; // the driver is continuous: 7.1 terminates (Lemma 17)
+  go.max_subdomains = std::max(o.max_subdomains, go.min_subdomains);
+  while (out.rounds.size() < o.max_rounds &&
+         out.rounds[out.chosen].over_refinement > o.target_over_refinement) {
+    std::size_t found = 0;
+    const feature_driven_sizing driver =
+        detail::tiny_feature_driver(g, f, max_area, cap, slope, found);
+    if (found == 0) break;
+    gradation_report rep;
+    decomposition d = gradation_controlled_decompose(g, driver, go, mo, partitioner, &rep);
+    geometric_sizing_result s = geometric_sizing(d, f, max_area, go.r2, executor);
+    out.rounds.push_back({d.subdomains.size(), found, slope, s.over_refinement(),
+                          s.expected_triangles_F(), rep.capped});
+    cap *= 8;
+    slope /= 4.0;
+    if (out.rounds.back().expected_triangles < out.rounds[out.chosen].expected_triangles) {
+      out.chosen = out.rounds.size() - 1;
+      out.parts = std::move(d);
+      out.sizing = std::move(s);
+    }
+    if (out.rounds.back().capped) break;
+  }
+  return out;
+}
+
+} // namespace pdd

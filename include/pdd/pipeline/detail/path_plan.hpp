@@ -1,0 +1,134 @@
+/// \file path_plan.hpp
+/// The pipeline's choice of path (monolithic, uniform, graded, geometric) and the geometric
+/// path's stage: the loop of decomposition and Algorithm 8.3 (pdd::geometric_decompose) on
+/// the pipeline's options, and what it records.
+#pragma once
+
+#include <pdd/concepts/executor.hpp>
+#include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/pslg.hpp>
+#include <pdd/decoupling/geometric_decompose.hpp>
+#include <pdd/geometry/lfs.hpp>
+#include <pdd/madd/decomposition.hpp>
+#include <pdd/madd/gradation_control.hpp>
+#include <pdd/madd/madd_options.hpp>
+#include <pdd/pipeline/options.hpp>
+#include <pdd/pipeline/statistics.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <utility>
+
+namespace pdd::detail {
+
+inline std::string number_text(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+/// The name of the path a decoupled pipeline took (generate_statistics::path).
+inline std::string path_name(const generate_statistics& st, bool geometric) {
+  return st.subdomains <= 1 ? "monolithic"
+         : geometric        ? "geometric"
+         : st.graded_path   ? "graded"
+                            : "uniform";
+}
+
+/// The plan's reason for falling back to N = 1 on too many split points.
+inline std::string split_point_reason(std::size_t split_points, double estimated,
+                                      const planning_options& p) {
+  return std::to_string(split_points) + " split points on the separators, more than " +
+         number_text(100.0 * p.max_split_point_fraction) + " % of the " + number_text(estimated) +
+         " estimated triangles (planning.max_split_point_fraction): decoupling would not pay, "
+         "one subdomain";
+}
+
+/// Whether the geometric path is planned (generate_options::geometric_sizing); writes the
+/// reason (and "monolithic" for N = 1) into the statistics. `area_min` is the smallest area
+/// bound over the domain (min of criteria.max_area and the field's lower bound).
+inline bool choose_geometric_path(const pslg& domain, const generate_options& o, double area_min,
+                                  generate_statistics& st) {
+  const auto no = [&](const std::string& why) {
+    st.plan_reason = why;
+    return false;
+  };
+  if (st.subdomains <= 1) {
+    st.path = "monolithic";
+    return no(o.subdomains == 1 ? "one subdomain requested"
+              : std::isfinite(area_min)
+                  ? "estimated " + number_text(st.estimated_triangles) +
+                        " triangles: too few to decompose (pdd::automatic_subdomains)"
+                  : "no area bound: the kernel meshes the domain graded by its geometry");
+  }
+  if (o.geometric_sizing == geometric_sizing_mode::off) return no("geometric sizing off");
+  if (o.decoupling.k_override > 0.0 || o.decoupling.k_scale != 1.0)
+    return no("decoupling.k_override or k_scale set: the uniform path");
+  if (!std::isfinite(area_min)) return no("no area bound: Algorithm 8.3 scales a bounded field");
+  if (o.geometric_sizing == geometric_sizing_mode::on) {
+    st.plan_reason = "geometric sizing on";
+    return true;
+  }
+  // automatic: the uniform --max-area with automatic N (a field or a requested N keep their
+  // graded or uniform path unless geometric sizing is on)
+  if (o.sizing)
+    return no("a sizing field: the graded path (geometric sizing auto needs a uniform bound)");
+  if (o.subdomains != 0) return no("a requested N: geometric sizing auto plans automatic N only");
+  const double lfs = lfs_min(domain), term = 0.5 * std::sqrt(area_min / std::numbers::sqrt2);
+  const std::string numbers =
+      "lfs_min " + number_text(lfs) + ", (1/2) sqrt(m / sqrt2) " + number_text(term);
+  if (!(lfs < term)) return no("no feature smaller than the mesh (" + numbers + ")");
+  st.plan_reason = "a feature smaller than the mesh (" + numbers + "): Algorithm 8.3";
+  return true;
+}
+
+/// The geometric path's decomposition: pdd::geometric_decompose from `initial` with
+/// Algorithm 7.1's options as the pipeline sets them (R1, R2 of o.gradation; at least n
+/// subdomains; Condition 3 T = target_subdomain_triangles for automatic N).
+template <GraphPartitioner P, Executor E>
+geometric_decomposition
+run_geometric(const pslg& domain, decomposition initial, const generate_options& o, std::size_t n,
+              const madd_options& mo, const P& partitioner, const E& executor) {
+  gradation_options go = o.gradation;
+  go.min_subdomains = n;
+  if (o.subdomains == 0) go.max_subdomain_triangles = o.planning.target_subdomain_triangles;
+  geometric_decompose_options gdo = o.geometric_loop;
+  gdo.max_subdomains = std::max<std::size_t>(gdo.max_subdomains, 4 * n);
+  return geometric_decompose(domain, std::move(initial), o.sizing, o.criteria.max_area, go, mo, gdo,
+                             partitioner, executor);
+}
+
+/// Records the loop in the statistics and the gradation report (m_F(D_i) = g_i, M_F(D_i),
+/// the expected triangles under F for the executor's order) and scales the estimate by the
+/// chosen round's over-refinement. Returns true when the plan should fall back to N = 1
+/// (automatic N and over-refinement above o.max_geometric_over_refinement).
+inline bool record_geometric(const geometric_decomposition& gd, const generate_options& o,
+                             generate_statistics& st, gradation_report& rep) {
+  st.sizing_rounds = gd.rounds.size();
+  st.sizing_round_used = gd.chosen;
+  st.estimated_over_refinement.clear();
+  for (const geometric_round& r : gd.rounds)
+    st.estimated_over_refinement.push_back(r.over_refinement);
+  const double rho = gd.rounds[gd.chosen].over_refinement;
+  rep = {};
+  for (std::size_t s = 0; s < gd.sizing.g.size(); ++s) {
+    rep.bounds.push_back(gd.sizing.field->piece_bounds(s));
+    rep.expected_triangles.push_back(gd.sizing.expected_f[s] / gd.sizing.scale(s));
+  }
+  st.plan_reason += "; " + std::to_string(gd.rounds.size()) +
+                    " round(s), estimated over-refinement " + number_text(100.0 * rho) + " %";
+  if (o.subdomains != 0 || !(rho > o.max_geometric_over_refinement)) {
+    st.estimated_triangles *= 1.0 + rho; // the plan's size check counts F's triangles
+    return false;
+  }
+  st.plan_reason += " > " + number_text(100.0 * o.max_geometric_over_refinement) +
+                    " %: decoupling would not pay, one subdomain";
+  return true;
+}
+
+} // namespace pdd::detail
