@@ -9,6 +9,7 @@
 #include <pdd/pipeline.hpp>
 
 #include "mesh_compare.hpp"
+#include "pipeline_run.hpp"
 
 #include <gtest/gtest.h>
 
@@ -48,20 +49,10 @@ struct run {
 };
 
 run mesh_and_verify(const pdd::pslg& g, const pdd::generate_options& o) {
-  pdd::pipeline<> p(g, o);
-  p.decouple();
-  run r;
-  if (p.subdomains() <= 1) {
-    r.mesh = p.mesh_whole();
-  } else {
-    pdd::merge_sink sink(o.threads);
-    p.mesh(sink);
-    r.mesh = sink.take();
-  }
-  r.stats = p.statistics();
+  pdd::test::pipeline_run p = pdd::test::run_pipeline(g, o);
   // against the pipeline's field: F on the geometric path
-  r.report = pdd::verify(r.mesh, g, {.criteria = o.criteria}, p.options().sizing);
-  return r;
+  pdd::verification_report report = pdd::verify(p.mesh, g, {.criteria = o.criteria}, p.sizing);
+  return {std::move(p.mesh), p.stats, std::move(report)};
 }
 
 TEST(GeometricPipeline, TinyNotchAutomaticDecouplesVerifiedAndThreadIndependent) {

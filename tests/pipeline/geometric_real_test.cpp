@@ -13,6 +13,7 @@
 #include <pdd/shielding/shield_statistics.hpp>
 
 #include "mesh_compare.hpp"
+#include "pipeline_run.hpp"
 #include "test_support.hpp"
 
 #include <gtest/gtest.h>
@@ -29,20 +30,11 @@ struct run {
 };
 
 run mesh_verified(const pdd::pslg& g, const pdd::generate_options& o) {
-  pdd::pipeline<> p(g, o);
-  p.decouple();
-  run r;
-  if (p.subdomains() <= 1) {
-    r.mesh = p.mesh_whole();
-  } else {
-    pdd::merge_sink sink(o.threads);
-    p.mesh(sink);
-    r.mesh = sink.take();
-  }
-  r.stats = p.statistics();
+  pdd::test::pipeline_run p = pdd::test::run_pipeline(g, o);
+  run r{std::move(p.mesh), p.stats};
   pdd::verify_options vo{.criteria = o.criteria};
   vo.quality_exempt = pdd::find_shielded_triangles(r.mesh, g);
-  const pdd::verification_report rep = pdd::verify(r.mesh, g, vo, p.options().sizing);
+  const pdd::verification_report rep = pdd::verify(r.mesh, g, vo, p.sizing);
   EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
   EXPECT_EQ(rep.delaunay_violations, 0u);
   EXPECT_EQ(rep.area_violations, 0u);
