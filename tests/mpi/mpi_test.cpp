@@ -1,8 +1,9 @@
 // The MPI backend end to end: `mpiexec -n P pdd-mesh-mpi` against the threaded
-// `pdd-mesh --output-per-subdomain` (every file bitwise equal), the statistics, and failures
-// (a throwing kernel through the library API, bad input): every rank ends, rank 0 reports once,
-// nothing is left in the output folder. ctest sets OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) (CI runs as
-// root); PDD_MPIEXEC_FLAGS holds --oversubscribe for Open MPI (P > cores here).
+// `pdd-mesh --output-per-subdomain` (every file bitwise equal, and pdd-verify passes on it), the
+// statistics, and failures (a throwing kernel through the library API, bad input): every rank
+// ends, rank 0 reports once, nothing is left in the output folder. ctest sets
+// OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) (CI runs as root); PDD_MPIEXEC_FLAGS holds --oversubscribe for
+// Open MPI (P > cores here).
 #include "test_files.hpp"
 
 #include <gtest/gtest.h>
@@ -69,8 +70,17 @@ std::size_t expect_same_files(const fs::path& a, const fs::path& b, const std::s
   return same;
 }
 
+/// pdd-verify on the output folder `out` of case c: every piece and every interface.
+void expect_verified_output(const fs::path& out, const mesh_case& c, const std::string& what) {
+  const auto r =
+      run_command(std::string(PDD_VERIFY_EXE) + " " + shell_quoted(out / "mesh.pvtu") + " " +
+                  shell_quoted(c.input) + " --max-area " + c.max_area + " --quiet");
+  EXPECT_EQ(r.code, 0) << what << ": pdd-verify\n" << r.output;
+}
+
 /// Runs the case on 2, 3 and 4 ranks and compares every file with the threaded run's, and the
-/// statistics that do not depend on the run (triangles, angles, ratio, histogram).
+/// statistics that do not depend on the run (triangles, angles, ratio, histogram); pdd-verify
+/// passes on every output.
 void expect_bitwise_as_threaded(const mesh_case& c, const std::string& name) {
   const fs::path threaded = threaded_output(c, name);
   const auto expected = nlohmann::json::parse(pdd::test::read_text(threaded / "stats.json"));
@@ -86,6 +96,7 @@ void expect_bitwise_as_threaded(const mesh_case& c, const std::string& name) {
     EXPECT_EQ(expect_same_files(threaded / "out", dir / "out", what),
               static_cast<std::size_t>(c.subdomains) + 1)
         << what;
+    expect_verified_output(dir / "out", c, what);
     const auto got = nlohmann::json::parse(pdd::test::read_text(dir / "stats.json"));
     EXPECT_EQ(got["ranks"], ranks) << what;
     EXPECT_EQ(got["subdomains"], c.subdomains) << what;
