@@ -74,7 +74,7 @@ TEST(GeometricSizing, ThreeSubdomainsByHand) {
   for (const auto& ic : c.parts.interfaces)
     EXPECT_LE(r.g[ic.a], 1.5 * r.g[ic.b] * (1 + 1e-15));
   // the same numbers on TBB's executor
-  const auto t = pdd::geometric_sizing(c.parts, {}, 0.001, 1.5, pdd::tbb_executor(2));
+  const auto t = pdd::geometric_sizing(c.parts, {}, 0.001, 1.5, pdd::tbb_executor{2});
   EXPECT_EQ(t.g, r.g);
 }
 

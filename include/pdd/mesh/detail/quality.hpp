@@ -3,10 +3,13 @@
 /// deterministic parallel reduction.
 #pragma once
 
+#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/mesh/mesh_statistics.hpp>
-#include <pdd/parallel/deterministic_reduce.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -61,14 +64,30 @@ inline constexpr std::size_t statistics_grain = 4096;
 /// floating-point sum of areas is bitwise reproducible.
 template <class AreaBound>
 statistics_accumulator accumulate_statistics(const triangle_mesh& m, const AreaBound& bound_at) {
-  return deterministic_reduce<statistics_accumulator>(
-      m.triangles.size(), statistics_grain, [&](statistics_accumulator& acc, std::size_t t) {
-        const auto& tri = m.triangles[t];
-        const point& a = m.vertices[tri[0]];
-        const point& b = m.vertices[tri[1]];
-        const point& c = m.vertices[tri[2]];
-        acc.add_triangle(a, b, c, bound_at(triangle_centroid(a, b, c)));
+  using range = tbb::blocked_range<std::size_t>;
+  const tsan_fork_join fork_join;
+  const auto body = [&](const range& r, statistics_accumulator acc) {
+    tsan_fork_join::task_begins();
+    const auto task = fork_join.task();
+    for (std::size_t t = r.begin(); t != r.end(); ++t) {
+      const auto& tri = m.triangles[t];
+      const point& a = m.vertices[tri[0]];
+      const point& b = m.vertices[tri[1]];
+      const point& c = m.vertices[tri[2]];
+      acc.add_triangle(a, b, c, bound_at(triangle_centroid(a, b, c)));
+    }
+    return acc;
+  };
+  const statistics_accumulator acc = tbb::parallel_deterministic_reduce(
+      range(0, m.triangles.size(), statistics_grain), statistics_accumulator{}, body,
+      [&](statistics_accumulator x, const statistics_accumulator& y) {
+        tsan_fork_join::task_begins();
+        const auto task = fork_join.task();
+        x.join(y);
+        return x;
       });
+  fork_join.join();
+  return acc;
 }
 
 template <class AreaBound>

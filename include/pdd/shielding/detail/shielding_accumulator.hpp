@@ -1,11 +1,15 @@
 /// \file shielding_accumulator.hpp
 /// Implementation of pdd::compute_shielding_statistics: a per-triangle accumulator and its
-/// parallel reduction (counts, minima and maxima: the same bits for any thread count).
+/// parallel reduction (every quantity is a count, a minimum or a maximum, so the result does
+/// not depend on how the range is split: the same bits for any thread count).
 #pragma once
 
+#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
-#include <pdd/parallel/deterministic_reduce.hpp>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <array>
@@ -56,11 +60,27 @@ struct shielding_accumulator {
 /// The accumulated shielding statistics of all triangles of m, in parallel.
 inline shielding_accumulator accumulate_shielding(const triangle_mesh& m,
                                                   const small_angle_apex_map& apex) {
-  return deterministic_reduce<shielding_accumulator>(
-      m.triangles.size(), 4096, [&](shielding_accumulator& acc, std::size_t t) {
-        const auto& tri = m.triangles[t];
-        acc.add_triangle({m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]}, apex);
+  using range = tbb::blocked_range<std::size_t>;
+  const tsan_fork_join fork_join;
+  const auto body = [&](const range& r, shielding_accumulator acc) {
+    tsan_fork_join::task_begins();
+    const auto task = fork_join.task();
+    for (std::size_t t = r.begin(); t != r.end(); ++t) {
+      const auto& tri = m.triangles[t];
+      acc.add_triangle({m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]}, apex);
+    }
+    return acc;
+  };
+  const shielding_accumulator acc = tbb::parallel_deterministic_reduce(
+      range(0, m.triangles.size(), 4096), shielding_accumulator{}, body,
+      [&](shielding_accumulator x, const shielding_accumulator& y) {
+        tsan_fork_join::task_begins();
+        const auto task = fork_join.task();
+        x.join(y);
+        return x;
       });
+  fork_join.join();
+  return acc;
 }
 
 } // namespace pdd::detail
