@@ -244,6 +244,11 @@ void compare_monolithic(mesh_run& r, progress& bar) {
 void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) {
   const pdd::generate_statistics& gs = r.gs;
   j["input"] = o.input;
+  j["output"] = o.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.output);
+  if (!o.per_subdomain_dir.empty()) { // the per-subdomain files: where and in which format
+    j["per_subdomain_dir"] = o.per_subdomain_dir;
+    j["format"] = pdd::to_string(o.format);
+  }
   j["triangles"] = r.triangles();
   j["vertices"] = r.mesh ? nlohmann::json(r.mesh->vertices.size()) : nullptr;
   j["estimated_triangles"] = gs.estimated_triangles; // the up-front estimate
@@ -307,7 +312,6 @@ void add_run_stats(const mesh_run& r, nlohmann::json& j) {
   j["delaunay_violations"] = r.report ? nlohmann::json(r.report->delaunay_violations) : nullptr;
   j["conforming"] = r.report ? nlohmann::json(r.report->ok()) : nullptr;
   if (r.monolithic_triangles) {
-    j["monolithic_triangles"] = *r.monolithic_triangles;
     j["monolithic_triangles"] = *r.monolithic_triangles;
     j["over_refinement_pct"] =
         100.0 *

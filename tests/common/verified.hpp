@@ -4,10 +4,10 @@
 // smallest angle >= 20.7 deg, every shielded triangle's apex angle equal to the input angle.
 #pragma once
 
-#include <pdd/core/pslg.hpp>
 #include <pdd/core/mesh_criteria.hpp>
-#include <pdd/mesh/quality.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 
@@ -27,6 +27,22 @@ inline std::string describe(const verification_report& rep) {
          " nonmanifold " + std::to_string(rep.nonmanifold_edges) + " area " +
          std::to_string(rep.area_mesh) + " vs " + std::to_string(rep.area_domain) +
          (rep.messages.empty() ? "" : "\n" + rep.messages.front());
+}
+
+/// pdd::verify of m against d, `criteria` and the area bound of `sizing`, with quality checked
+/// on the triangles that are not shielded only; expects the mesh conforming, globally Delaunay
+/// and within the area bound (`at` names the case in failure messages).
+template <class Sizing>
+verification_report expect_verified_shielded(const triangle_mesh& m, const pslg& d,
+                                             const mesh_criteria& criteria, const Sizing& sizing,
+                                             const std::string& at = {}) {
+  verify_options vo{.criteria = criteria};
+  vo.quality_exempt = find_shielded_triangles(m, d);
+  verification_report rep = verify(m, d, vo, sizing);
+  EXPECT_TRUE(rep.ok()) << at << ": " << describe(rep);
+  EXPECT_EQ(rep.delaunay_violations, 0u) << at;
+  EXPECT_EQ(rep.area_violations, 0u) << at;
+  return rep;
 }
 
 /// Expects m to be a verified mesh of d under `criteria` (see the file comment); `at` names the

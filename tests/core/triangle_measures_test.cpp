@@ -1,13 +1,16 @@
 // core/triangle_measures.hpp: the one-atan2 smallest angle agrees with the smallest of the three
-// angles, on hand-made triangles and on random ones (fixed seed), thin and near-equilateral ones
-// included (where the shortest edge is nearly tied).
+// angles, and the two-atan2 triangle_angles_deg with three angle_at_deg, on hand-made triangles
+// and on random ones (fixed seed), thin and near-equilateral ones included (where the shortest
+// edge is nearly tied).
 #include <pdd/core/triangle_measures.hpp>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
+#include <vector>
 
 using pdd::point;
 using pdd::detail::angle_at_deg;
@@ -15,9 +18,29 @@ using pdd::detail::smallest_angle_deg;
 using pdd::detail::triangle_angles_deg;
 
 namespace {
+std::array<double, 3> three_atan2(const point& a, const point& b, const point& c) {
+  return {angle_at_deg(a, b, c), angle_at_deg(b, c, a), angle_at_deg(c, a, b)};
+}
 double smallest_of_three(const point& a, const point& b, const point& c) {
-  const auto ang = triangle_angles_deg(a, b, c);
+  const auto ang = three_atan2(a, b, c);
   return std::min({ang[0], ang[1], ang[2]});
+}
+/// Random triangles: every fourth nearly equilateral, every fourth nearly isosceles-thin.
+std::vector<std::array<point, 3>> random_triangles(std::size_t n) {
+  std::mt19937_64 rng(20261126);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uniform_real_distribution<double> tiny(-1e-6, 1e-6);
+  std::vector<std::array<point, 3>> out;
+  for (std::size_t i = 0; i < n; ++i) {
+    const point a{u(rng), u(rng)}, b{u(rng), u(rng)};
+    point c{u(rng), u(rng)};
+    if (i % 4 == 1)
+      c = {(a.x + b.x) / 2 - (b.y - a.y) * std::sqrt(3.0) / 2 + tiny(rng),
+           (a.y + b.y) / 2 + (b.x - a.x) * std::sqrt(3.0) / 2 + tiny(rng)};
+    if (i % 4 == 2) c = {(a.x + b.x) / 2 - (b.y - a.y) * 1e3, (a.y + b.y) / 2 + (b.x - a.x) * 1e3};
+    out.push_back({a, b, c});
+  }
+  return out;
 }
 } // namespace
 
@@ -32,21 +55,30 @@ TEST(TriangleMeasures, SmallestAngleOfHandMadeTriangles) {
 }
 
 TEST(TriangleMeasures, SmallestAngleMatchesTheSmallestOfThreeOnRandomTriangles) {
-  std::mt19937_64 rng(20261126);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  std::uniform_real_distribution<double> tiny(-1e-6, 1e-6);
-  int exact = 0;
-  for (int i = 0; i < 100000; ++i) {
-    const point a{u(rng), u(rng)}, b{u(rng), u(rng)};
-    // every fourth triangle nearly equilateral, every fourth nearly isosceles-thin
-    point c{u(rng), u(rng)};
-    if (i % 4 == 1)
-      c = {(a.x + b.x) / 2 - (b.y - a.y) * std::sqrt(3.0) / 2 + tiny(rng),
-           (a.y + b.y) / 2 + (b.x - a.x) * std::sqrt(3.0) / 2 + tiny(rng)};
-    if (i % 4 == 2) c = {(a.x + b.x) / 2 - (b.y - a.y) * 1e3, (a.y + b.y) / 2 + (b.x - a.x) * 1e3};
+  int exact = 0, i = 0;
+  for (const auto& [a, b, c] : random_triangles(100000)) {
     const double one = smallest_angle_deg(a, b, c), three = smallest_of_three(a, b, c);
-    EXPECT_NEAR(one, three, 1e-9 * std::max(1.0, three)) << i;
+    EXPECT_NEAR(one, three, 1e-9 * std::max(1.0, three)) << i++;
     exact += one == three;
   }
   EXPECT_GT(exact, 99000); // the same corner, hence the same bits, but where edges nearly tie
+}
+
+TEST(TriangleMeasures, AnglesMatchThreeAtan2AndSumTo180) {
+  const auto right = triangle_angles_deg({0, 0}, {std::sqrt(3.0), 0}, {0, 1});
+  EXPECT_NEAR(right[0], 90.0, 1e-12);
+  EXPECT_NEAR(right[1], 30.0, 1e-12);
+  EXPECT_NEAR(right[2], 60.0, 1e-12);
+  const auto flat = triangle_angles_deg({0, 0}, {1, 0}, {2, 0}); // degenerate: 0, 180, 0
+  EXPECT_EQ(flat[1], 180.0);
+  EXPECT_EQ(flat[0] + flat[2], 0.0);
+  int i = 0;
+  for (const auto& [a, b, c] : random_triangles(100000)) {
+    const auto two = triangle_angles_deg(a, b, c), three = three_atan2(a, b, c);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(two[k], three[k], 1e-9) << i << " corner " << k;
+    EXPECT_NEAR(two[0] + two[1] + two[2], 180.0, 1e-12) << i;
+    EXPECT_EQ(std::min({two[0], two[1], two[2]}), smallest_angle_deg(a, b, c)) << i;
+    ++i;
+  }
 }

@@ -149,6 +149,9 @@ TEST(DiskCheck, EstimateMatchesTheBytesWritten) {
                                 dir.string() + " --stats " + dir.string() + ".json");
       ASSERT_EQ(r.code, 0) << r.output;
       const auto j = nlohmann::json::parse(pdd::test::read_text(dir.string() + ".json"));
+      EXPECT_EQ(j["format"], pdd::to_string(f));
+      EXPECT_EQ(j["per_subdomain_dir"], dir.string());
+      EXPECT_TRUE(j["output"].is_null());
       const double estimate = pdd::estimated_piece_bytes(f, j["estimated_triangles"].get<double>(),
                                                          j["subdomains"].get<double>());
       const double written = static_cast<double>(bytes_in(dir));

@@ -15,6 +15,7 @@
 #include "mesh_compare.hpp"
 #include "pipeline_run.hpp"
 #include "test_support.hpp"
+#include "verified.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,12 +33,7 @@ struct run {
 run mesh_verified(const pdd::pslg& g, const pdd::generate_options& o) {
   pdd::test::pipeline_run p = pdd::test::run_pipeline(g, o);
   run r{std::move(p.mesh), p.stats};
-  pdd::verify_options vo{.criteria = o.criteria};
-  vo.quality_exempt = pdd::find_shielded_triangles(r.mesh, g);
-  const pdd::verification_report rep = pdd::verify(r.mesh, g, vo, p.sizing);
-  EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
-  EXPECT_EQ(rep.delaunay_violations, 0u);
-  EXPECT_EQ(rep.area_violations, 0u);
+  pdd::test::expect_verified_shielded(r.mesh, g, o.criteria, p.sizing);
   EXPECT_EQ(r.stats.interface_splits, 0u);
   EXPECT_EQ(r.stats.shield_splits, 0u);
   return r;

@@ -14,6 +14,7 @@
 
 #include "mesh_compare.hpp"
 #include "test_support.hpp"
+#include "verified.hpp"
 
 #include <gtest/gtest.h>
 
@@ -46,12 +47,7 @@ std::size_t expect_graded_with_shields(const pdd::pslg& g, pdd::generate_options
   EXPECT_EQ(st.shield_splits, 0u);
   const std::size_t small = pdd::detail::small_angle_apexes(g).size();
   EXPECT_EQ(st.shielded_triangles, small);
-  pdd::verify_options vo{.criteria = o.criteria};
-  vo.quality_exempt = pdd::find_shielded_triangles(one.mesh, g);
-  const pdd::verification_report rep = pdd::verify(one.mesh, g, vo, o.sizing);
-  EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
-  EXPECT_EQ(rep.delaunay_violations, 0u);
-  EXPECT_EQ(rep.area_violations, 0u);
+  pdd::test::expect_verified_shielded(one.mesh, g, o.criteria, o.sizing);
   const pdd::shielding_statistics sh = pdd::compute_shielding_statistics(one.mesh, g);
   EXPECT_EQ(sh.shielded_triangles, small);
   EXPECT_LT(sh.max_shield_angle_error_deg, 1e-6);
@@ -101,10 +97,7 @@ TEST(GradedShieldsPipeline, KScaleStillFallsBackWithShields) {
   EXPECT_FALSE(r.statistics.graded_path);
   EXPECT_NE(r.statistics.graded_fallback.find("k_scale"), std::string::npos);
   EXPECT_EQ(r.statistics.shielded_triangles, pdd::detail::small_angle_apexes(g).size());
-  pdd::verify_options vo{.criteria = o.criteria};
-  vo.quality_exempt = pdd::find_shielded_triangles(r.mesh, g);
-  const pdd::verification_report rep = pdd::verify(r.mesh, g, vo, o.sizing);
-  EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
+  pdd::test::expect_verified_shielded(r.mesh, g, o.criteria, o.sizing);
 }
 
 } // namespace

@@ -103,10 +103,10 @@ inline shielding_statistics compute_shielding_statistics(const triangle_mesh& m,
   st.min_input_angle_deg = angles.min_input_angle_deg;
   const detail::shielding_accumulator acc = detail::accumulate_shielding(m, angles.apexes);
   st.shielded_triangles = acc.shielded;
-  st.min_angle_unshielded_deg =
-      std::isfinite(acc.min_angle_unshielded) ? acc.min_angle_unshielded : 0.0;
-  st.max_ratio_unshielded = acc.max_ratio_unshielded;
-  st.max_ratio_shielded = acc.max_ratio_shielded;
+  const double min_unshielded = acc.min_angle_unshielded();
+  st.min_angle_unshielded_deg = std::isfinite(min_unshielded) ? min_unshielded : 0.0;
+  st.max_ratio_unshielded = detail::shielding_accumulator::max_ratio(acc.unshielded_worst);
+  st.max_ratio_shielded = detail::shielding_accumulator::max_ratio(acc.shielded_worst);
   st.max_shield_angle_error_deg = acc.max_angle_error;
   return st;
 }

@@ -12,16 +12,17 @@
 #include <pdd/geometry/loops.hpp>
 #include <pdd/mesh/detail/verify.hpp>
 #include <pdd/mesh/verification_report.hpp>
+#include <pdd/parallel/deterministic_reduce.hpp>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
-#include <tbb/parallel_reduce.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,14 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
   namespace vi = verify_impl;
   const std::size_t nv = m.vertices.size();
   std::vector<std::uint8_t> flags(m.triangles.size(), 0);
+  // the smallest angle below min_angle_deg - 1e-9: by its squared sine (no atan2 per triangle;
+  // the sine is monotone up to 90 deg, and no triangle's smallest angle exceeds 60)
   const double min_angle = o.criteria.min_angle_deg - 1e-9;
+  const double bound_sine = std::sin(std::min(min_angle, 90.0) * std::numbers::pi / 180.0);
+  const double bound_sine2 = bound_sine * bound_sine;
+  const auto below_angle = [&](const point& a, const point& b, const point& c) {
+    return min_angle > 0.0 && !(squared_sine_min_angle(a, b, c) >= bound_sine2); // NaN: below
+  };
   const tsan_fork_join fork_join;
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flags.size(), 1024), [&](const auto& rg) {
     pdd::detail::tsan_fork_join::task_begins();
@@ -70,9 +78,7 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
       std::uint8_t f = 0;
       if (CGAL::orientation(vi::to_cgal(a), vi::to_cgal(b), vi::to_cgal(c)) != CGAL::LEFT_TURN)
         f |= tri_orientation;
-      const auto angles = triangle_angles_deg(a, b, c);
-      if (std::min({angles[0], angles[1], angles[2]}) < min_angle &&
-          !(t < o.quality_exempt.size() && o.quality_exempt[t]))
+      if (below_angle(a, b, c) && !(t < o.quality_exempt.size() && o.quality_exempt[t]))
         f |= tri_quality;
       const double bound = std::min(o.criteria.max_area, bound_at(triangle_centroid(a, b, c)));
       if (triangle_area(a, b, c) > bound * (1.0 + 1e-12)) f |= tri_area;
@@ -224,22 +230,16 @@ inline void report_edges(const triangle_mesh& m, const verify_impl::edge_table& 
 
 /// Sum of the areas of the well-formed triangles: a deterministic parallel reduction.
 inline double mesh_area(const triangle_mesh& m, const std::vector<std::uint8_t>& flags) {
-  const tsan_fork_join fork_join;
-  const double area = tbb::parallel_deterministic_reduce(
-      tbb::blocked_range<std::size_t>(0, m.triangles.size(), 4096), 0.0,
-      [&](const auto& rg, double acc) {
-        pdd::detail::tsan_fork_join::task_begins();
-        const auto task = fork_join.task();
-        for (std::size_t t = rg.begin(); t != rg.end(); ++t)
+  return deterministic_reduce(
+      m.triangles.size(), 0.0,
+      [&](double& acc, std::size_t begin, std::size_t end) {
+        for (std::size_t t = begin; t != end; ++t)
           if (!(flags[t] & tri_malformed)) {
             const auto& tri = m.triangles[t];
             acc += triangle_area(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
           }
-        return acc;
       },
-      std::plus<double>());
-  fork_join.join();
-  return area;
+      [](double& into, double from) { into += from; });
 }
 
 template <class AreaBound>
