@@ -6,7 +6,6 @@
 
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
@@ -15,9 +14,9 @@
 #include <pdd/madd/detail/rounds.hpp>
 #include <pdd/madd/detail/split.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 
-#include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -61,17 +60,14 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
     const std::optional<std::vector<std::size_t>> order = detail::next_round(state, o);
     if (!order) break; // done
     std::vector<detail::madd_split_result> res(order->size());
-    const detail::tsan_fork_join fork_join;
-    arena.execute([&] {
-      tbb::parallel_for(std::size_t{0}, order->size(), [&](std::size_t k) {
-        pdd::detail::tsan_fork_join::task_begins();
-        const auto task = fork_join.task();
+    const detail::range_function split_leaves = [&](std::size_t first, std::size_t last) {
+      for (std::size_t k = first; k != last; ++k) {
         detail::madd_split_options sk = so;
         sk.target_length = detail::target_length(state.leaves[(*order)[k]].region, o, global_h);
         res[k] = detail::split_region(state.leaves[(*order)[k]].region, sk, partitioner);
-      });
-    });
-    fork_join.join();
+      }
+    };
+    arena.execute([&] { detail::parallel_ranges(order->size(), 1, split_leaves); });
     ++st.rounds;
     detail::apply_round(state, *order, res, st);
   }

@@ -1,20 +1,12 @@
 /// \file deterministic_reduce.hpp
 /// A parallel reduction whose result is bitwise the same for every thread count: [0, n) is cut
-/// into chunks whose bounds depend on n only, each chunk is accumulated on its own (in parallel),
-/// and the chunks' results are joined in chunk order on the calling thread.
-///
-/// Why not tbb::parallel_deterministic_reduce: its task types carry the body's and the join's
-/// types three times over; with lambdas inside templates (a sizing field's lambda, a test's
-/// lambda) the symbolized names of its frames outgrew ThreadSanitizer's symbolizer buffer
-/// ("Symbolizer buffer too small"), the frames came out as <null>, and the suppressions of TBB's
-/// own task-object races (tests/tsan-suppressions.txt, matched by name) no longer applied. Here
-/// the only type TBB instantiates is chunk_body, one short name for every caller.
+/// into chunks whose bounds depend on n only, each chunk is accumulated on its own (in parallel,
+/// through parallel_ranges), and the chunks' results are joined in chunk order on the calling
+/// thread. (tbb::parallel_deterministic_reduce would do the same, but its task types carry the
+/// body's and the join's types: see parallel_for.hpp on why pdd's loops avoid that.)
 #pragma once
 
-#include <pdd/core/thread_sanitizer.hpp>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <pdd/parallel/parallel_for.hpp>
 
 #include <algorithm>
 #include <cstddef>
@@ -46,31 +38,12 @@ struct chunk_plan {
 /// The signature of a chunk's work: (chunk index, first item, one past the last item).
 using chunk_function = std::function<void(std::size_t, std::size_t, std::size_t)>;
 
-/// The task body TBB runs: a fixed, short type (see the file comment).
-struct chunk_body {
-  const chunk_plan* plan;
-  const chunk_function* work;
-  const tsan_fork_join* fork_join;
-
-  void operator()(const tbb::blocked_range<std::size_t>& chunks) const {
-    tsan_fork_join::task_begins();
-    const auto task = fork_join->task();
-    for (std::size_t k = chunks.begin(); k != chunks.end(); ++k)
-      (*work)(k, plan->begin(k), plan->end(k));
-  }
-};
-
 /// Calls work(k, begin, end) for every chunk of the plan, in parallel on the current arena.
 inline void for_each_chunk(const chunk_plan& plan, const chunk_function& work) {
-  if (plan.count <= 1) {
-    for (std::size_t k = 0; k < plan.count; ++k)
+  parallel_ranges(plan.count, 1, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k != last; ++k)
       work(k, plan.begin(k), plan.end(k));
-    return;
-  }
-  const tsan_fork_join fork_join;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, plan.count, 1),
-                    chunk_body{&plan, &work, &fork_join});
-  fork_join.join();
+  });
 }
 
 /// The reduction of [0, n): add_range(acc, begin, end) accumulates items into acc (which starts

@@ -3,12 +3,10 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
-#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/parallel/detail/jobs.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/parallel/schedule_order.hpp>
 
-#include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
 #include <tbb/task_arena.h>
 
 #include <algorithm>
@@ -48,20 +46,14 @@ struct tbb_executor {
     } else {
       tbb::task_arena arena(static_cast<int>(p));
       std::atomic<std::size_t> next{0};
-      const int workers = static_cast<int>(std::min<std::size_t>(p, n));
-      const detail::tsan_fork_join fork_join;
-      arena.execute([&] {
-        tbb::parallel_for(
-            0, workers, 1,
-            [&](int) {
-              pdd::detail::tsan_fork_join::task_begins();
-              const auto task = fork_join.task();
-              for (std::size_t pos; (pos = next.fetch_add(1, std::memory_order_relaxed)) < n;)
-                errors.guarded(job, order[pos]);
-            },
-            tbb::simple_partitioner{});
-      });
-      fork_join.join();
+      const std::size_t workers = std::min<std::size_t>(p, n);
+      // one task per worker, each taking the next job in schedule order until none is left
+      const detail::range_function take_jobs = [&](std::size_t, std::size_t) {
+        for (std::size_t pos; (pos = next.fetch_add(1, std::memory_order_relaxed)) < n;)
+          errors.guarded(job, order[pos]);
+      };
+      arena.execute(
+          [&] { detail::parallel_ranges(workers, 1, take_jobs, detail::range_split::exact); });
     }
     errors.rethrow_first();
   }

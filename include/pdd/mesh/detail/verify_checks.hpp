@@ -6,16 +6,13 @@
 
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/core/thread_sanitizer.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/mesh/detail/verify.hpp>
 #include <pdd/mesh/verification_report.hpp>
 #include <pdd/parallel/deterministic_reduce.hpp>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
+#include <pdd/parallel/parallel_for.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -61,11 +58,8 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
   const auto below_angle = [&](const point& a, const point& b, const point& c) {
     return min_angle > 0.0 && !(squared_sine_min_angle(a, b, c) >= bound_sine2); // NaN: below
   };
-  const tsan_fork_join fork_join;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, flags.size(), 1024), [&](const auto& rg) {
-    pdd::detail::tsan_fork_join::task_begins();
-    const auto task = fork_join.task();
-    for (std::size_t t = rg.begin(); t != rg.end(); ++t) {
+  parallel_ranges(flags.size(), 1024, [&](std::size_t first, std::size_t last) {
+    for (std::size_t t = first; t != last; ++t) {
       const auto& tri = m.triangles[t];
       if (tri[0] >= nv || tri[1] >= nv || tri[2] >= nv || tri[0] == tri[1] || tri[1] == tri[2] ||
           tri[0] == tri[2]) {
@@ -85,7 +79,6 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
       flags[t] = f;
     }
   });
-  fork_join.join();
   return flags;
 }
 
@@ -142,11 +135,8 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
   namespace vi = verify_impl;
   const auto& edges = table.edges();
   std::vector<std::uint8_t> flags(edges.size(), 0);
-  const tsan_fork_join fork_join;
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, edges.size(), 1024), [&](const auto& rg) {
-    pdd::detail::tsan_fork_join::task_begins();
-    const auto task = fork_join.task();
-    for (std::size_t k = rg.begin(); k != rg.end(); ++k) {
+  parallel_ranges(edges.size(), 1024, [&](std::size_t first, std::size_t last) {
+    for (std::size_t k = first; k != last; ++k) {
       const vi::edge_record& e = edges[k];
       if (e.count > 2 || (e.count == 2 && e.forward[0] == e.forward[1])) {
         flags[k] = 1;
@@ -171,7 +161,6 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
       if (side == CGAL::ON_POSITIVE_SIDE) flags[k] = 2;
     }
   });
-  fork_join.join();
   return flags;
 }
 
