@@ -67,6 +67,18 @@ public:
     return {face_location::kind::inside, f->info().face};
   }
 
+  /// True when a triangle of the domain has PSLG vertex v as a corner (for an isolated
+  /// vertex: it lies inside a face of the domain). Complexity O(degree of v).
+  bool touches_domain(index_t v) const {
+    const detail::pslg_cdt& cdt = pf_.lt.triangulation.cdt;
+    auto fc = cdt.incident_faces(pf_.lt.triangulation.vertex[v]);
+    const auto first = fc;
+    do {
+      if (!cdt.is_infinite(fc) && pf_.in_domain(fc)) return true;
+    } while (++fc != first);
+    return false;
+  }
+
   /// The number of faces of the arrangement (domain_triangle::face < face_count()).
   std::size_t face_count() const noexcept { return pf_.face_in_domain.size(); }
   /// True when the domain is one of closed loops (see detail::pslg_faces::closed_loops).

@@ -213,7 +213,7 @@ inline void report_isolated_vertices(const pslg& d, const verify_impl::vertex_lo
     const auto it = lookup.find(d.vertices[v]);
     bool used = false;
     if (it != lookup.end()) table.for_each_incident(it->second, [&](index_t) { used = true; });
-    if (used || faces.locate(d.vertices[v]).where != face_location::kind::inside) continue;
+    if (used || !faces.touches_domain(static_cast<index_t>(v))) continue;
     sink.add(sink.r.missing_vertices, [&] {
       return "input vertex " + std::to_string(v) + " at " + verify_impl::str(d.vertices[v]) +
              " lies inside the domain but is no vertex of the mesh";
