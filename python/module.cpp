@@ -118,16 +118,25 @@ py::dict statistics_dict(const generate_statistics& s, const mesh_statistics& q)
 }
 
 /// The whole domain meshed by the kernel under a sizing field, small angles shielded first
-/// (as pdd::pipeline::mesh_whole does for a uniform bound).
+/// (as pdd::pipeline::mesh_whole does for a uniform bound); a domain that is not one of closed
+/// loops by Triangle's rule, unshielded (the kernel's clusters, as the pipeline does).
 template <SizingField S>
 triangle_mesh mesh_with_sizing(const pslg& g, const mesh_criteria& c, const S& sizing,
                                generate_statistics& st) {
+  st.subdomains = 1;
+  st.threads = 1;
+  if (!has_closed_loops(g)) {
+    pslg whole = g;
+    whole.rule = domain_rule::triangle;
+    mesher_result r = cgal::mesher{}.mesh(whole, c, sizing);
+    st.general_domain = true;
+    st.triangles = r.mesh.triangles.size();
+    return std::move(r.mesh);
+  }
   const shielded_domain sd = shield(g, c.max_area);
   mesher_result r = cgal::mesher{}.mesh(sd.domain, c, sizing);
   if (add_shield_triangles(r, sd.domain, sd.triangles, 0) != 0)
     throw meshing_error(-1, "the kernel split a shield edge");
-  st.subdomains = 1;
-  st.threads = 1;
   st.shielded_triangles = sd.triangles.size();
   st.triangles = r.mesh.triangles.size();
   return std::move(r.mesh);

@@ -148,6 +148,14 @@ void read_input(const cli_options& o, mesh_run& r) {
   const auto t0 = std::chrono::steady_clock::now();
   r.domain = pdd::read_poly(o.input);
   r.props = pdd::analyze(r.domain); // validates, throws geometry_error
+  // Not closed loops (internal or dangling segments, isolated vertices, touching loops,
+  // internal boundaries): Triangle's rule, meshed whole (--subdomains > 1 is refused).
+  if (!r.props.closed_loops) {
+    r.domain.rule = pdd::domain_rule::triangle;
+    if (!o.quiet)
+      std::printf("pdd-mesh: the domain is not one of closed loops: meshed whole (one "
+                  "subdomain), small angles between segments by the kernel's clusters\n");
+  }
   r.t_read = pdd::seconds_since(t0);
   r.options = generate_options_for(o, r.domain, r.sizing_kind);
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
@@ -222,7 +230,10 @@ void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
   bar.stage("verifying");
   const auto t0 = std::chrono::steady_clock::now();
   pdd::verify_options vo{.criteria = r.options.criteria};
-  vo.quality_exempt = pdd::find_shielded_triangles(*r.mesh, r.domain);
+  vo.quality_exempt =
+      r.props.closed_loops
+          ? pdd::find_shielded_triangles(*r.mesh, r.domain)
+          : pdd::find_cluster_exempt_triangles(*r.mesh, r.domain, r.options.criteria.min_angle_deg);
   r.report = pdd::verify(*r.mesh, r.domain, vo, r.sizing);
   r.t_verify = pdd::seconds_since(t0);
 }

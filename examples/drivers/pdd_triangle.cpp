@@ -136,6 +136,9 @@ int run(const cli_options& o) {
     for (const auto& r : t.runs)
       n += r.subdomains;
     std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms_since(tm), n);
+    if (!t.runs.empty() && t.runs.front().general_domain)
+      std::printf("The domain is not one of closed loops (internal or dangling segments, "
+                  "isolated vertices, touching loops or internal boundaries): meshed whole.\n");
   }
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {

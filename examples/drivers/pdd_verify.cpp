@@ -82,8 +82,9 @@ void print_report(const pdd::pieces_report& r) {
 
 int run(const cli_options& o) {
   const auto start = std::chrono::steady_clock::now();
-  const pdd::pslg input = pdd::read_poly(o.input);
-  pdd::analyze(input); // validates the input, throws geometry_error
+  pdd::pslg input = pdd::read_poly(o.input);
+  // validates the input, throws geometry_error; not closed loops: Triangle's rule
+  if (!pdd::analyze(input).closed_loops) input.rule = pdd::domain_rule::triangle;
   pdd::verify_options vo{.criteria = o.criteria, .max_reported = o.max_reported};
   const pdd::pieces_report r = pdd::verify_pieces(o.index, input, vo);
   const double seconds =

@@ -34,6 +34,7 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/geometry/domain_angles.hpp>
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/feature_gap.hpp>
 #include <pdd/geometry/lfs.hpp>
@@ -116,6 +117,7 @@
 #include <pdd/meshing/mesh_subdomains.hpp>
 
 // level 7: mesh
+#include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/mesh_statistics.hpp>
 #include <pdd/mesh/quality.hpp>

@@ -71,23 +71,26 @@ template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitio
           Executor E = tbb_executor>
 class pipeline {
 public:
-  /// Checks the options (check_generate_options), validates the domain (pdd::validate),
+  /// Checks the options (check_generate_options), validates the domain (pdd::validate; one that
+  /// is not of closed loops, pdd::has_closed_loops, is meshed whole by Triangle's rule: N = 1),
   /// estimates the mesh size (pdd::estimate_mesh_size: the area bound, the sizing field and the
   /// local feature size; size_estimate()) and plans N from it (automatic_subdomains when
   /// options.subdomains == 0 and some area bound is given; N = 1 without any).
-  /// \throws pdd::decomposition_error for contradicting options; pdd::geometry_error for an
-  /// invalid domain.
+  /// \throws pdd::decomposition_error for contradicting options (also subdomains > 1 on a
+  /// domain not of closed loops); pdd::geometry_error for an invalid domain.
   pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
       : domain_(std::move(domain)), options_(std::move(options)), mesher_(std::move(mesher)),
         partitioner_(std::move(partitioner)),
         executor_(detail::make_executor<E>(options_.threads)) {
     check_generate_options(options_);
-    validate(domain_);
+    general_ = !has_closed_loops(domain_); // validates
+    if (general_) plan_general_domain();
     area_ = domain_area(domain_);
     stats_.threads = executor_.concurrency();
     if (options_.sizing) sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
-    estimate_ = detail::estimate_plan(domain_, options_.criteria, options_.sizing,
-                                      decoupling_criteria().max_area);
+    estimate_ = general_ ? detail::estimate_faces(domain_, options_.criteria, options_.sizing)
+                         : detail::estimate_plan(domain_, options_.criteria, options_.sizing,
+                                                 decoupling_criteria().max_area);
     stats_.estimated_triangles = estimate_.triangles;
     // without any area bound the mesh is graded by the geometry alone: the kernel meshes it
     const bool bounded = options_.sizing || std::isfinite(options_.criteria.max_area);
@@ -101,7 +104,12 @@ public:
                    !(options_.decoupling.k_override > 0.0) && options_.decoupling.k_scale == 1.0;
     geometric_plan_ = detail::choose_geometric_path(
         domain_, options_, std::min(options_.criteria.max_area, sizing_min_), stats_);
+    if (general_) stats_.plan_reason = detail::general_domain_reason;
+    stats_.general_domain = general_;
   }
+
+  /// True when the domain is not one of closed loops (pdd::has_closed_loops): meshed whole.
+  bool general_domain() const noexcept { return general_; }
 
   /// N, the number of subdomains this pipeline uses.
   std::size_t subdomains() const noexcept { return stats_.subdomains; }
@@ -237,6 +245,8 @@ public:
   }
   /// As mesh_whole(); `shielded_triangles` receives the number of shielded triangles.
   triangle_mesh mesh_whole(std::size_t& shielded_triangles) const {
+    shielded_triangles = 0;
+    if (general_) return mesher_.mesh(domain_, options_.criteria, options_.sizing).mesh;
     const shielded_domain sd = shield(domain_, decoupling_criteria().max_area);
     shielded_triangles = sd.triangles.size();
     if (sd.triangles.empty()) return mesher_.mesh(domain_, options_.criteria, options_.sizing).mesh;
@@ -257,6 +267,14 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
+  /// Triangle's rule for the kernel, one subdomain. \throws pdd::decomposition_error for N > 1.
+  void plan_general_domain() {
+    domain_.rule = domain_rule::triangle;
+    if (options_.subdomains > 1)
+      throw decomposition_error(detail::general_domain_error(options_.subdomains));
+    options_.subdomains = 1;
+  }
+
   /// Stage 1 of the graded method: Algorithm 7.1 (see generate_options::gradation) into
   /// decomposition_, with its measurements in gradation_ and the statistics.
   void decompose_graded(const madd_options& mo) {
@@ -389,6 +407,8 @@ private:
   bool graded_plan_ = false;
   /// The geometric path is planned / used (options_.sizing: its F, user_sizing_: the user's).
   bool geometric_plan_ = false;
+  /// The domain is not one of closed loops (see general_domain()).
+  bool general_ = false;
   any_sizing user_sizing_;
   gradation_report gradation_;
   decomposition decomposition_;

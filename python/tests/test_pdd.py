@@ -224,3 +224,22 @@ def test_readme_shows_the_example_script():
     block = readme.split("```python\n", 1)[1].split("```", 1)[0]
     script = pathlib.Path(__file__).parents[1] / "examples" / "annulus.py"
     assert block == script.read_text()
+
+
+def test_general_pslg_internal_dangling_and_isolated():
+    # issue 13: an internal constraint (the diagonal), a dangling segment and an isolated vertex,
+    # meshed whole by Triangle's rule, with a uniform bound and with a sizing callable
+    sq = square()
+    v = np.vstack([sq["vertices"], [[0.1, 0.5], [0.3, 0.8], [0.8, 0.3]]])
+    s = np.vstack([sq["segments"], [[0, 2], [4, 5]]])
+    for kw in (dict(max_area=0.005), dict(sizing=lambda x, y: 0.002 + 0.01 * x)):
+        r = pdd.mesh(v, s, **kw)
+        t = r["triangles"]
+        assert r["statistics"]["subdomains"] == 1
+        assert abs(areas(r["vertices"], t).sum() - 1.0) < 1e-12
+        assert np.array_equal(r["vertices"][:7], v)  # input vertices first, bit for bit
+        assert 6 in set(t.ravel().tolist())  # the isolated vertex is a mesh vertex
+        # the dangling segment's ends are ends of mesh edges on segments (its subsegments)
+        assert {4, 5} <= set(r["segments"].ravel().tolist())
+    with pytest.raises(RuntimeError, match="closed loops"):
+        pdd.mesh(v, s, max_area=0.005, subdomains=4)

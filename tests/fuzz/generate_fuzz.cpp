@@ -64,7 +64,9 @@ std::optional<pdd::pslg> read_domain(const std::uint8_t* data, std::size_t size)
     // A vertex count of 0 refers to a .node sibling: looked up under /dev/null, never found.
     pdd::pslg g = pdd::parse_poly(in, "fuzz.poly", "/dev/null");
     if (g.vertices.size() > max_vertices) return std::nullopt;
-    pdd::validate(g);
+    // domains not made of closed loops are meshed whole (issue 13); this target fuzzes the
+    // decoupled pipeline
+    if (!pdd::has_closed_loops(g)) return std::nullopt;
     return g;
   } catch (const pdd::input_error&) {
   } catch (const pdd::geometry_error&) {

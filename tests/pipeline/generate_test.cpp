@@ -257,9 +257,9 @@ TEST(Generate, SharedDataDomains) {
     pdd::pslg d;
     try {
       d = pdd::read_poly(f);
-      pdd::validate(d);
+      if (!pdd::has_closed_loops(d)) continue; // meshed whole: general_pslg_test.cpp
     } catch (const pdd::error&) {
-      continue; // not pure loops (dangling segments, isolated vertices): not for this method
+      continue;
     }
     SCOPED_TRACE(f.filename().string());
     pdd::generate_options o;

@@ -235,7 +235,9 @@ TEST(ShieldMesh, SharedGeometries) {
     pdd::pslg g;
     try {
       g = pdd::read_poly(f.string());
-      pdd::validate(g);
+      if (!pdd::has_closed_loops(g)) // validates
+        throw pdd::geometry_error("not made of closed loops: meshed whole by the kernel "
+                                  "(tests/pipeline/general_pslg_test.cpp)");
     } catch (const pdd::error& e) {
       rejected.push_back(name + ": " + e.what());
       continue;

@@ -147,7 +147,7 @@ TEST(Triangulate, NeighborsAreSymmetricAndAcrossFromTheVertex) {
   EXPECT_EQ(boundary, t.mesh.segments.size()); // every boundary edge is a subsegment
 }
 
-TEST(Triangulate, RefusesWithoutPAndHolesWithO) {
+TEST(Triangulate, RefusesWithoutPAndMeshesHolesWithO) {
   const pdd::pslg g = two_squares();
   try {
     tri::triangulate(g, tri::parse_switches("q"));
@@ -155,13 +155,12 @@ TEST(Triangulate, RefusesWithoutPAndHolesWithO) {
   } catch (const tri::switch_error& e) {
     EXPECT_NE(std::string(e.what()).find("switch -p is required"), std::string::npos);
   }
-  // O drops the hole point: pdd then needs one for the inner loop and says so.
-  try {
-    tri::triangulate(g, tri::parse_switches("pO"));
-    FAIL() << "a hole loop without its point accepted";
-  } catch (const pdd::geometry_error& e) {
-    EXPECT_NE(std::string(e.what()).find("hole"), std::string::npos) << e.what();
-  }
+  // O drops the hole point: as in Triangle, the inner loop is then an internal boundary and
+  // the hole is meshed too (one subdomain: the domain is no longer one of closed loops).
+  const auto with_hole = tri::triangulate(g, tri::parse_switches("pqa0.1"));
+  const auto without = tri::triangulate(g, tri::parse_switches("pOqa0.1"));
+  EXPECT_GT(without.mesh.triangles.size(), with_hole.mesh.triangles.size());
+  EXPECT_TRUE(without.runs.front().general_domain);
   // O on a domain without holes changes nothing.
   const pdd::pslg sq = square_loop({}, 0, 0, 1, 1);
   EXPECT_EQ(tri::triangulate(sq, tri::parse_switches("pOqa0.1")).mesh.triangles,
@@ -172,7 +171,7 @@ TEST(Triangulate, JettisonKeepsEveryUsedVertex) {
   const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
   const auto a = tri::triangulate(key, tri::parse_switches("pqa0.01"));
   const auto b = tri::triangulate(key, tri::parse_switches("pqa0.01j"));
-  EXPECT_EQ(b.jettisoned_vertices, 0u); // pdd's inputs have no isolated vertices
+  EXPECT_EQ(b.jettisoned_vertices, 0u); // key.poly has no isolated vertices
   EXPECT_EQ(a.mesh.vertices, b.mesh.vertices);
   // the helper itself: an unused vertex goes, the rest keep their order
   pdd::triangle_mesh m = a.mesh;

@@ -9,9 +9,11 @@
 /// detail::sizing_field_archetype (the least a SizingField offers); models provide `mesh` as a
 /// template over SizingField.
 ///
-/// Domain: the faces enclosed by an odd number of the pslg's closed segment loops (outer loops
-/// and holes, Triangle's convention), less any region reached from a hole point without
-/// crossing a segment.
+/// Domain: by d.rule (pdd::domain_rule): odd_nesting, the faces enclosed by an odd number of
+/// the pslg's closed segment loops; triangle, every face not reachable from the unbounded face
+/// without crossing a segment (Triangle's rule); either less any region reached from a hole
+/// point without crossing a segment. Segments inside the domain (internal, dangling) are
+/// constraints: unions of mesh edges; input vertices inside it are mesh vertices.
 ///
 /// Semantics the decoupling proofs rely on (dissertation ch. 1.1, 6.1): the model is a
 /// Delaunay refinement (Ruppert-type) mesher. It never moves or removes input vertices

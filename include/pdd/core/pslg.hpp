@@ -24,8 +24,23 @@ struct region {
   double max_area = -1.0; ///< negative: no constraint
 };
 
-/// A planar straight-line graph: the domain is bounded by closed loops of segments; hole
-/// points mark the holes (Triangle's convention). Plain value type; see validate().
+/// Which faces of a pslg's arrangement form its domain (what a DelaunayMesher, domain_faces,
+/// domain_area and verify mesh or measure). Both agree on closed loops with a hole point in
+/// every hole; pdd::validate and the pipeline read a user's PSLG by Triangle's rule.
+enum class domain_rule : unsigned char {
+  /// The faces enclosed by an odd number of closed segment loops, less the faces reached from
+  /// a hole point without crossing a segment (the subdomains pdd builds have no hole points).
+  odd_nesting,
+  /// Triangle's: every face not reachable from the unbounded face without crossing a segment,
+  /// less the faces reached from a hole point the same way (internal constraints between two
+  /// faces, dangling segments and isolated vertices inside a face, loops nested without a hole
+  /// point are internal boundaries).
+  triangle
+};
+
+/// A planar straight-line graph: vertices (any may be isolated), segments (closed loops,
+/// internal constraints, dangling segments), hole points and regions; `rule` says which faces
+/// are the domain. Plain value type; see validate().
 struct pslg {
   std::vector<point> vertices;
   std::vector<int> vertex_markers; ///< same size as vertices
@@ -39,6 +54,9 @@ struct pslg {
   std::vector<segment> segments;
   std::vector<point> holes;
   std::vector<region> regions;
+  /// Which faces are the domain (see domain_rule; pdd's pipeline sets triangle on its copy of a
+  /// user's domain that needs it).
+  domain_rule rule = domain_rule::odd_nesting;
 
   /// Appends a vertex and returns its index.
   index_t add_vertex(point p, int marker = 0) {

@@ -1,12 +1,13 @@
 /// \file domain_faces.hpp
-/// pdd::domain_faces: the faces of a PSLG domain (the inside of a loop minus the loops nested
-/// directly in it) on its constrained Delaunay triangulation: the triangles inside the domain
-/// with the face each lies in, and the face holding a point.
+/// pdd::domain_faces: the faces of a PSLG domain (by its rule: the pieces of the plane between
+/// its segments that are in the domain) on its constrained Delaunay triangulation: the
+/// triangles inside the domain with the face each lies in, and the face holding a point.
 #pragma once
 
 #include <pdd/core/index.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/geometry/detail/pslg_faces.hpp>
 #include <pdd/geometry/loops.hpp>
 
 #include <array>
@@ -15,7 +16,8 @@
 namespace pdd {
 
 /// A triangle of the domain's constrained Delaunay triangulation: PSLG vertex ids (ccw) and
-/// the face it lies in, named by the loop that bounds the face from outside.
+/// the face it lies in (a dense id of the arrangement's faces, the same for every triangle of
+/// one face; deterministic for a given PSLG).
 struct domain_triangle {
   std::array<index_t, 3> vertices;
   index_t face;
@@ -24,33 +26,35 @@ struct domain_triangle {
 /// Where a point lies relative to the domain's faces.
 struct face_location {
   enum class kind { inside, on_boundary, outside } where = kind::outside;
-  index_t face = no_index; ///< the face (its outer loop) when where == inside
+  index_t face = no_index; ///< the face (as domain_triangle::face) when where == inside
 };
 
-/// The faces of a PSLG domain, labelled by the same nesting flood fill as pdd::find_loops
-/// (one constrained Delaunay triangulation, CGAL, exact predicates).
-/// Thread-safety: const member functions may be called concurrently.
+/// The faces of a PSLG domain by g.rule (pdd::domain_rule): odd_nesting labels them by the same
+/// nesting flood fill as pdd::find_loops (hole points are not looked at), triangle by
+/// Triangle's rule (detail::find_faces_into). One constrained Delaunay triangulation, CGAL,
+/// exact predicates. Thread-safety: const member functions may be called concurrently.
 class domain_faces {
 public:
-  /// \throws pdd::geometry_error as pdd::find_loops. Complexity O(n log n) expected.
-  explicit domain_faces(const pslg& g) { detail::find_loops_into(g, lt_); }
+  /// \throws pdd::geometry_error as pdd::find_loops (odd_nesting) or pdd::validate (triangle).
+  /// Complexity O(n log n) expected.
+  explicit domain_faces(const pslg& g) { detail::faces_by_rule(g, pf_); }
 
   /// The triangles inside the domain (odd nesting level), in the triangulation's order
   /// (deterministic for a given PSLG). Complexity O(n).
   std::vector<domain_triangle> triangles() const {
     std::vector<domain_triangle> out;
-    const detail::pslg_cdt& cdt = lt_.triangulation.cdt;
+    const detail::pslg_cdt& cdt = pf_.lt.triangulation.cdt;
     for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
-      if (detail::in_domain(f))
+      if (pf_.in_domain(f))
         out.push_back(
-            {{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}, f->info().owner});
+            {{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}, f->info().face});
     return out;
   }
 
   /// The face holding p: on_boundary when p lies on a PSLG vertex or segment, outside when
   /// it lies in a hole or outside every loop. Complexity O(sqrt n) expected (CGAL's walk).
   face_location locate(const point& p) const {
-    const detail::pslg_cdt& cdt = lt_.triangulation.cdt;
+    const detail::pslg_cdt& cdt = pf_.lt.triangulation.cdt;
     detail::pslg_cdt::Locate_type type{};
     int li = 0;
     const detail::pslg_cdt::Face_handle f = cdt.locate(detail::to_cgal(p), type, li);
@@ -58,17 +62,30 @@ public:
         (type == detail::pslg_cdt::EDGE && f->is_constrained(li)))
       return {face_location::kind::on_boundary, no_index};
     if (type == detail::pslg_cdt::OUTSIDE_AFFINE_HULL ||
-        type == detail::pslg_cdt::OUTSIDE_CONVEX_HULL || cdt.is_infinite(f) ||
-        !detail::in_domain(f))
+        type == detail::pslg_cdt::OUTSIDE_CONVEX_HULL || cdt.is_infinite(f) || !pf_.in_domain(f))
       return {face_location::kind::outside, no_index};
-    return {face_location::kind::inside, f->info().owner};
+    return {face_location::kind::inside, f->info().face};
   }
 
-  /// The loops of the PSLG (as pdd::find_loops).
-  const loop_structure& loops() const noexcept { return lt_.structure; }
+  /// True when a triangle of the domain has PSLG vertex v as a corner (for an isolated
+  /// vertex: it lies inside a face of the domain). Complexity O(degree of v).
+  bool touches_domain(index_t v) const {
+    const detail::pslg_cdt& cdt = pf_.lt.triangulation.cdt;
+    auto fc = cdt.incident_faces(pf_.lt.triangulation.vertex[v]);
+    const auto first = fc;
+    do {
+      if (!cdt.is_infinite(fc) && pf_.in_domain(fc)) return true;
+    } while (++fc != first);
+    return false;
+  }
+
+  /// The number of faces of the arrangement (domain_triangle::face < face_count()).
+  std::size_t face_count() const noexcept { return pf_.face_in_domain.size(); }
+  /// True when the domain is one of closed loops (see detail::pslg_faces::closed_loops).
+  bool closed_loops() const noexcept { return pf_.closed_loops; }
 
 private:
-  detail::loops_with_triangulation lt_;
+  detail::pslg_faces pf_;
 };
 
 } // namespace pdd

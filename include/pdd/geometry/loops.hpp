@@ -8,6 +8,7 @@
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/detail/loop_nesting.hpp>
+#include <pdd/geometry/detail/pslg_faces.hpp>
 #include <pdd/geometry/loop_structure.hpp>
 
 #include <cmath>
@@ -45,11 +46,18 @@ inline double domain_area(const loop_structure& ls) {
   return area;
 }
 
-/// Area of the meshed domain: the regions enclosed by an odd number of loops.
-/// \pre As find_loops(). \throws geometry_error as find_loops().
+/// Area of the meshed domain by g.rule: odd_nesting, the regions enclosed by an odd number of
+/// loops (from the loops' shoelace areas); triangle, the faces of Triangle's rule (the sum of
+/// the areas of their constrained Delaunay triangles; the loops' areas when the domain is one
+/// of closed loops, so that both rules give the same number there).
+/// \pre odd_nesting: as find_loops(); triangle: g passed pdd::validate.
+/// \throws geometry_error as find_loops() or pdd::validate.
 /// Complexity O(n log n) expected; thread-safe.
 inline double domain_area(const pslg& g) {
-  return domain_area(find_loops(g));
+  if (g.rule == domain_rule::odd_nesting) return domain_area(find_loops(g));
+  detail::pslg_faces pf;
+  detail::find_faces_into(g, pf);
+  return pf.closed_loops ? domain_area(pf.lt.structure) : detail::faces_area(pf);
 }
 
 } // namespace pdd

@@ -5,6 +5,7 @@
 
 #include <pdd/core/bbox.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/geometry/detail/face_angles.hpp>
 #include <pdd/geometry/detail/lfs.hpp>
 #include <pdd/geometry/detail/properties.hpp>
 #include <pdd/geometry/lfs.hpp>
@@ -29,6 +30,12 @@ struct pslg_properties {
   double min_angle_deg = 360.0;        ///< smallest angle at a vertex on the domain side
   index_t min_angle_vertex = no_index; ///< the vertex where it occurs (smallest id on ties)
   double lfs_min = std::numeric_limits<double>::infinity(); ///< Definition 7
+  /// The domain is one of closed loops (pdd::has_closed_loops). When false (internal or
+  /// dangling segments, isolated vertices, touching loops, internal boundaries), the loop
+  /// counts are 0, min_angle_deg is the smallest angle between consecutive segments at a
+  /// vertex on the domain side (detail::min_face_angle_deg) and lfs_min is NaN (not computed:
+  /// Definition 7 is pdd's for closed loops).
+  bool closed_loops = true;
 };
 
 /// Bounding box of the vertices (an empty box, xmin = +inf, for no vertices).
@@ -55,15 +62,24 @@ inline double min_domain_angle_deg(const pslg& g, index_t* vertex = nullptr) {
 }
 
 /// Validates a PSLG (validate()) and computes its properties, building the constrained
-/// triangulation once for loops, nesting and lfs_min.
+/// triangulation once for loops, nesting and lfs_min (see pslg_properties::closed_loops for a
+/// domain that is not one of closed loops: its area is that of Triangle's faces).
 /// \throws geometry_error as validate() with default options.
 /// Complexity O(n log^2 n) (validation) plus O(n log n) expected; thread-safe.
 inline pslg_properties analyze(const pslg& g) {
-  detail::loops_with_triangulation lt;
-  detail::validate_into(g, validate_options{}, &lt);
+  detail::pslg_faces pf;
+  detail::validate_into(g, validate_options{}, &pf);
   pslg_properties p;
-  p.area = domain_area(lt.structure);
   p.box = bounding_box(g);
+  if (!pf.closed_loops) {
+    p.closed_loops = false;
+    p.area = detail::faces_area(pf);
+    p.min_angle_deg = detail::min_face_angle_deg(g, pf, &p.min_angle_vertex);
+    p.lfs_min = std::numeric_limits<double>::quiet_NaN();
+    return p;
+  }
+  const detail::loops_with_triangulation& lt = pf.lt;
+  p.area = domain_area(lt.structure);
   p.num_loops = lt.structure.loops.size();
   for (const polygon_loop& l : lt.structure.loops)
     ++(l.bounds_domain_inside ? p.num_outer_loops : p.num_holes);

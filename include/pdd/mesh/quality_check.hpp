@@ -11,6 +11,8 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/geometry/validate.hpp>
+#include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/detail/quality_check.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
@@ -25,22 +27,13 @@
 
 namespace pdd {
 
-/// Checks every triangle of m: vertex indices, counter-clockwise orientation, the area bound
-/// min(criteria.max_area, sizing at the centroid) and, unless it is a shielded triangle of
-/// the domain (pdd::find_shielded_triangles of its small input angles `angles`), the angle bound
-/// criteria.min_angle_deg; with the
-/// tolerances of pdd::verify (1e-9 deg, relative 1e-12 of the area).
-/// \param subdomain the id to report; -1: the triangle's marker (the subdomain id in a merged
-///   mesh of pdd::generate), 0 without markers.
-/// \throws pdd::meshing_error(subdomain, ...) naming the first bad triangle: its index in m,
-///   its vertices' coordinates, its smallest angle and area. A bad triangle is an internal
-///   error (the kernel broke its guarantee), never a property of the input.
-/// Complexity O(T log s) for T triangles and s small input angles, parallel. Thread-safe.
-template <SizingField S = uniform_sizing>
-void check_quality(const triangle_mesh& m, const small_input_angles& angles,
-                   const mesh_criteria& criteria, const S& sizing = {}, long long subdomain = -1) {
+namespace detail {
+/// check_quality with the exempt triangles given (verify_options::quality_exempt).
+template <SizingField S>
+void check_quality_exempt(const triangle_mesh& m, std::vector<char> exempt,
+                          const mesh_criteria& criteria, const S& sizing, long long subdomain) {
   verify_options vo{.criteria = criteria};
-  vo.quality_exempt = find_shielded_triangles(m, angles);
+  vo.quality_exempt = std::move(exempt);
   const auto bound_at = [&](const point& p) { return static_cast<double>(sizing.area_at(p)); };
   const std::vector<std::uint8_t> flags = detail::check_triangles(m, vo, bound_at);
   const auto bad = std::find_if(flags.begin(), flags.end(), [](std::uint8_t f) { return f != 0; });
@@ -57,12 +50,39 @@ void check_quality(const triangle_mesh& m, const small_input_angles& angles,
   }
   throw meshing_error(id, detail::describe_bad_triangle(m, t, *bad, criteria, bound));
 }
+} // namespace detail
 
-/// check_quality with the small input angles of `domain` (pdd::find_small_input_angles).
-/// \throws pdd::geometry_error as find_loops(), pdd::meshing_error as above.
+/// Checks every triangle of m: vertex indices, counter-clockwise orientation, the area bound
+/// min(criteria.max_area, sizing at the centroid) and, unless it is a shielded triangle of
+/// the domain (pdd::find_shielded_triangles of its small input angles `angles`), the angle bound
+/// criteria.min_angle_deg; with the
+/// tolerances of pdd::verify (1e-9 deg, relative 1e-12 of the area).
+/// \param subdomain the id to report; -1: the triangle's marker (the subdomain id in a merged
+///   mesh of pdd::generate), 0 without markers.
+/// \throws pdd::meshing_error(subdomain, ...) naming the first bad triangle: its index in m,
+///   its vertices' coordinates, its smallest angle and area. A bad triangle is an internal
+///   error (the kernel broke its guarantee), never a property of the input.
+/// Complexity O(T log s) for T triangles and s small input angles, parallel. Thread-safe.
+template <SizingField S = uniform_sizing>
+void check_quality(const triangle_mesh& m, const small_input_angles& angles,
+                   const mesh_criteria& criteria, const S& sizing = {}, long long subdomain = -1) {
+  detail::check_quality_exempt(m, find_shielded_triangles(m, angles), criteria, sizing, subdomain);
+}
+
+/// check_quality with the small input angles of `domain` (pdd::find_small_input_angles); on a
+/// domain of domain_rule::triangle that is not one of closed loops (meshed whole, unshielded),
+/// the triangles at small angles between segments are exempt instead
+/// (pdd::find_cluster_exempt_triangles).
+/// \throws pdd::geometry_error as find_loops() or validate(), pdd::meshing_error as above.
 template <SizingField S = uniform_sizing>
 void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criteria& criteria,
                    const S& sizing = {}, long long subdomain = -1) {
+  if (domain.rule == domain_rule::triangle && !has_closed_loops(domain)) {
+    detail::check_quality_exempt(m,
+                                 find_cluster_exempt_triangles(m, domain, criteria.min_angle_deg),
+                                 criteria, sizing, subdomain);
+    return;
+  }
   check_quality(m, find_small_input_angles(domain), criteria, sizing, subdomain);
 }
 
@@ -80,14 +100,21 @@ public:
 
   quality_check_sink(Inner& inner, const pslg& domain, mesh_criteria criteria, S sizing = {})
       : inner_(inner), angles_(find_small_input_angles(domain)), criteria_(criteria),
-        sizing_(std::move(sizing)) {}
+        sizing_(std::move(sizing)) {
+    if (domain.rule == domain_rule::triangle && !has_closed_loops(domain)) general_ = &domain;
+  }
 
   void start(index_t n) {
     if constexpr (requires { inner_.start(n); }) inner_.start(n);
   }
   /// Checks the mesh (\throws as check_quality, with id), then hands it on.
   void consume(index_t id, triangle_mesh&& mesh) {
-    check_quality(mesh, angles_, criteria_, sizing_, static_cast<long long>(id));
+    if (general_) // meshed whole: the cluster exemption (see check_quality)
+      detail::check_quality_exempt(
+          mesh, find_cluster_exempt_triangles(mesh, *general_, criteria_.min_angle_deg), criteria_,
+          sizing_, static_cast<long long>(id));
+    else
+      check_quality(mesh, angles_, criteria_, sizing_, static_cast<long long>(id));
     inner_.consume(id, std::move(mesh));
   }
   void finish() { inner_.finish(); }
@@ -95,6 +122,9 @@ public:
 private:
   Inner& inner_;
   small_input_angles angles_; ///< the domain's, found once (not per subdomain)
+  /// The domain when it is not one of closed loops (domain_rule::triangle; it must outlive the
+  /// sink), else null.
+  const pslg* general_ = nullptr;
   mesh_criteria criteria_;
   S sizing_;
 };

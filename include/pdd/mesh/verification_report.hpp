@@ -27,14 +27,17 @@ struct verify_options {
 
 /// What verify() found. Counts are exact; messages describe the first max_reported
 /// violations (ids and coordinates) in a fixed order: triangles by index, then duplicate
-/// vertices, then segments by index, then edges by their endpoints, then the area.
+/// vertices, then segments by index, then isolated input vertices by index, then edges by their
+/// endpoints, then the area.
 struct verification_report {
   std::size_t delaunay_violations = 0;    ///< interior edges that are not locally Delaunay
   std::size_t orientation_violations = 0; ///< clockwise, degenerate or malformed triangles
   std::size_t missing_segments = 0;       ///< input segments that are no union of mesh edges
   std::size_t duplicate_vertices = 0;     ///< vertices at the coordinates of an earlier one
-  std::size_t quality_violations = 0;     ///< triangles with an angle below the bound
-  std::size_t area_violations = 0;        ///< triangles larger than the area bound
+  /// Isolated input vertices (on no segment) inside the domain that no triangle uses.
+  std::size_t missing_vertices = 0;
+  std::size_t quality_violations = 0; ///< triangles with an angle below the bound
+  std::size_t area_violations = 0;    ///< triangles larger than the area bound
   /// Edges in more than two triangles, interior edges used twice in the same direction, and
   /// boundary edges (in one triangle) that lie on no input segment.
   std::size_t nonmanifold_edges = 0;
@@ -46,8 +49,8 @@ struct verification_report {
   /// True if no violation was found and the areas agree.
   bool ok() const noexcept {
     return delaunay_violations == 0 && orientation_violations == 0 && missing_segments == 0 &&
-           duplicate_vertices == 0 && quality_violations == 0 && area_violations == 0 &&
-           nonmanifold_edges == 0 && area_ok;
+           duplicate_vertices == 0 && missing_vertices == 0 && quality_violations == 0 &&
+           area_violations == 0 && nonmanifold_edges == 0 && area_ok;
   }
 };
 

@@ -21,14 +21,16 @@ namespace pdd {
 /// coincide; every input segment is a union of mesh edges (a chain from the mesh vertex at
 /// one endpoint to the one at the other through vertices on the segment, see
 /// detail::verify_impl::on_segment_line); every edge lies in at most two triangles, interior
-/// edges in opposite directions, and boundary edges lie on input segments; the triangle areas
+/// edges in opposite directions, and boundary edges lie on input segments; every isolated input
+/// vertex inside the domain (d.rule) is a vertex of a triangle; the triangle areas
 /// sum to pdd::domain_area(d) within o.area_tolerance; every triangle has its smallest angle
 /// >= o.criteria.min_angle_deg - 1e-9 deg (unless o.quality_exempt marks it) and its area <=
 /// min(o.criteria.max_area, sizing.area_at(centroid)) * (1 + 1e-12). Input vertices are found in
 /// the mesh by their coordinates, so any vertex numbering works. \tparam S a SizingField. \throws
-/// geometry_error as pdd::domain_area(d) (d must consist of closed loops). Complexity O(n) expected
-/// (hashing, bucket sort of edges, segment walks over incident edges); the triangle and edge checks
-/// run in parallel (TBB). The report is the same for any number of threads. Thread-safe.
+/// geometry_error as pdd::domain_area(d) (odd_nesting: d must consist of closed loops). Complexity
+/// O(n) expected (hashing, bucket sort of edges, segment walks over incident edges); the triangle
+/// and edge checks run in parallel (TBB). The report is the same for any number of threads.
+/// Thread-safe.
 template <SizingField S>
 verification_report verify(const triangle_mesh& m, const pslg& d, const verify_options& o,
                            const S& sizing) {

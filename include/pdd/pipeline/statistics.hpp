@@ -72,6 +72,9 @@ struct generate_statistics {
   std::string path;
   /// Why that path (the plan's rule and its numbers, or the fallback's).
   std::string plan_reason;
+  /// The domain is not one of closed loops (pdd::has_closed_loops): Triangle's rule, meshed
+  /// whole by the kernel (one subdomain; plan_reason says so).
+  bool general_domain = false;
   /// The geometric path: rounds of decomposition + Algorithm 8.3 run (pdd::geometric_decompose),
   /// the estimated over-refinement of each (integral of 1 / F over that of 1 / f, minus 1) and
   /// the round used.

@@ -6,8 +6,10 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/geometry/domain_angles.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
+#include <pdd/geometry/validate.hpp>
 #include <pdd/shielding/detail/plan.hpp>
 #include <pdd/shielding/detail/shielding_accumulator.hpp>
 
@@ -50,9 +52,25 @@ struct small_input_angles {
   double min_input_angle_deg = 360.0; ///< pdd::min_domain_angle_deg
 };
 
-/// The small input angles of `domain`. \pre domain valid (closed loops).
-/// 	hrows geometry_error as find_loops(). Complexity O(n log n). Thread-safe.
+/// The small input angles of `domain`. On a domain of domain_rule::triangle that is not one of
+/// closed loops, the angles between consecutive segments at a vertex on the domain side
+/// (internal and dangling constraints included, detail::for_each_domain_angle): the kernel
+/// meshes such a domain unshielded, and CGAL's clusters (concentric shells, see
+/// kernels/cgal/detail/cluster_rule.hpp) leave the triangles at these apexes below the bound.
+/// \pre domain valid. \throws geometry_error as find_loops() (odd_nesting) or validate().
+/// Complexity O(n log n). Thread-safe.
 inline small_input_angles find_small_input_angles(const pslg& domain) {
+  if (domain.rule == domain_rule::triangle && !has_closed_loops(domain)) {
+    small_input_angles out;
+    for (const domain_angle& a : domain_angles(domain)) {
+      out.min_input_angle_deg = std::min(out.min_input_angle_deg, a.angle_deg);
+      if (a.angle_deg >= detail::shield_threshold_deg) continue;
+      const point& v = domain.vertices[a.vertex];
+      double& at = out.apexes.try_emplace({v.x, v.y}, a.angle_deg).first->second;
+      at = std::min(at, a.angle_deg);
+    }
+    return out;
+  }
   return {detail::small_angle_apexes(domain), min_domain_angle_deg(domain)};
 }
 

@@ -10,6 +10,7 @@
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/triangle/detail/components.hpp>
+#include <pdd/triangle/detail/face_regions.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/detail/regions.hpp>
 #include <pdd/triangle/switches.hpp>
@@ -28,19 +29,23 @@ namespace pdd::triangle {
 ///
 /// Supported switches (pdd::triangle::parse_switches refuses the others): p (required: pdd
 /// meshes the domain enclosed by segment loops), q[angle], a[area], a alone (the regions'
-/// area bounds), A (regional attributes), O (the hole points are dropped; pdd then refuses a
-/// domain with holes, since every hole needs its point), j (drop unused vertices), n (the
+/// area bounds), A (regional attributes), O (the hole points are dropped: the holes are then
+/// meshed, internal boundaries, as in Triangle), j (drop unused vertices), n (the
 /// neighbour table). Q, V, N, E, P, B, I, z and r concern files and printing: the caller
 /// (pdd-triangle, the Python module) honours them.
 ///
-/// Differences from Triangle: the domain is the set of faces enclosed by an odd number of
-/// closed segment loops (pdd::validate); there are no internal segments, so a region is a
-/// connected component of the domain and Triangle's flood from a region seed reaches
-/// exactly that component. Without q the minimum angle is 0 but pdd's kernel still splits
+/// The domain is Triangle's (pdd::validate): every face of the segments' arrangement not
+/// reachable from infinity or from a hole point without crossing a segment; internal and
+/// dangling segments are mesh edges and isolated vertices inside the domain mesh vertices.
+/// Differences from Triangle: without q the minimum angle is 0 but pdd's kernel still splits
 /// segments that a vertex encroaches (its mesh is conforming, not Triangle's bare
-/// constrained Delaunay triangulation). When regional area bounds differ between
+/// constrained Delaunay triangulation). On a domain of closed loops (pdd::has_closed_loops) a
+/// region is a connected component of the domain; when regional area bounds differ between
 /// components, each component is meshed by its own pdd::generate run (the components share
-/// no segment, so the union is conforming).
+/// no segment, so the union is conforming). On any other domain (meshed whole by the
+/// pipeline) a region labels its face: one run with the regional bounds as a sizing field
+/// (pdd::regional_sizing: the smallest bound among a face's region points, where Triangle
+/// takes the last), attributes per face (detail::mesh_face_regions).
 /// \throws switch_error without p; pdd::geometry_error for an invalid domain (after O);
 ///   everything pdd::generate throws.
 /// Complexity: pdd::generate's, plus O(mesh) for the tables. Thread-safety: reentrant.
@@ -50,10 +55,12 @@ inline triangulation triangulate(pslg domain, const switches& sw,
     throw switch_error("switch -p is required: pdd meshes the domain enclosed by the segments "
                        "(Triangle without -p triangulates the convex hull of the vertices)");
   if (sw.ignore_holes) domain.holes.clear();
-  validate(domain);
+  const bool closed_loops = has_closed_loops(domain); // validates
   const generate_options gopt = detail::options_for(sw, o);
   triangulation out;
-  if (!domain.regions.empty() && (sw.regional_areas || sw.regional_attributes)) {
+  if (!domain.regions.empty() && (sw.regional_areas || sw.regional_attributes) && !closed_loops) {
+    detail::mesh_face_regions(domain, sw, gopt, out);
+  } else if (!domain.regions.empty() && (sw.regional_areas || sw.regional_attributes)) {
     detail::mesh_regions(domain, sw, gopt, out);
   } else {
     generate_result r = generate(domain, gopt);

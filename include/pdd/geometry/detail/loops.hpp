@@ -31,11 +31,14 @@ inline epick::Point_2 to_cgal(const point& p) {
 }
 
 /// Per-face data of the PSLG triangulation: nesting level (number of loops enclosing the
-/// face; -1 before the flood fill), the innermost loop enclosing it, and a dense face id.
+/// face; -1 before the flood fill), the innermost loop enclosing it, a dense triangle id, and
+/// the face of the arrangement it lies in (pslg_faces: triangles joined across unconstrained
+/// edges; 0 is the unbounded face).
 struct cdt_face_info {
   int level = -1;
   index_t owner = no_index;
   index_t id = no_index;
+  index_t face = no_index;
 };
 
 using cdt_vertex_base = CGAL::Triangulation_vertex_base_with_info_2<index_t, epick>;

@@ -5,14 +5,12 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/detail/loops.hpp>
+#include <pdd/geometry/detail/pslg_faces.hpp>
 #include <pdd/geometry/loops.hpp>
 
 #include <CGAL/Bbox_2.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
-#include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
 
 #include <algorithm>
 #include <cmath>
@@ -25,12 +23,6 @@
 #include <vector>
 
 namespace pdd::detail {
-
-inline std::string coords(const point& p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
-  return buf;
-}
 
 inline std::string seg_text(const pslg& g, std::size_t s) {
   return "segment " + std::to_string(s) + " (vertices " + std::to_string(g.segments[s].a) + " " +
@@ -169,72 +161,6 @@ inline void check_intersections(const pslg& g) {
       std::string(first->type == kind::cross ? "segments cross: " : "segments overlap: ") +
           seg_text(g, first->s) + " and " + seg_text(g, first->t) + more,
       {first->s, first->t});
-}
-
-/// The indices of g's hole points in spatial (Hilbert) order, so that each point location
-/// can start from the face of the previous one.
-inline std::vector<std::size_t> holes_in_spatial_order(const pslg& g,
-                                                       std::vector<epick::Point_2>& pts) {
-  for (const point& h : g.holes)
-    pts.push_back(to_cgal(h));
-  std::vector<std::size_t> order(pts.size());
-  std::iota(order.begin(), order.end(), std::size_t{0});
-  using pmap = CGAL::Pointer_property_map<epick::Point_2>::type;
-  CGAL::spatial_sort(
-      order.begin(), order.end(),
-      CGAL::Spatial_sort_traits_adapter_2<epick, pmap>(CGAL::make_property_map(pts)));
-  return order;
-}
-
-/// Checks that hole point i, located in face f (lt_type, li as CGAL's locate), lies strictly
-/// inside a hole (a region at even level >= 2); returns the loop that bounds that hole.
-/// \throws geometry_error naming the hole point otherwise.
-inline index_t hole_loop_of(const pslg& g, const pslg_cdt& cdt, std::size_t i,
-                            pslg_cdt::Face_handle f, pslg_cdt::Locate_type lt_type, int li) {
-  const std::string name = "hole point " + std::to_string(i) + " " + coords(g.holes[i]);
-  if (lt_type == pslg_cdt::VERTEX)
-    throw geometry_error(
-        name + " lies on vertex " + std::to_string(f->vertex(li)->info()) + ", on a segment", {i});
-  if (lt_type == pslg_cdt::EDGE && f->is_constrained(li)) {
-    const index_t a = f->vertex(pslg_cdt::cw(li))->info();
-    const index_t b = f->vertex(pslg_cdt::ccw(li))->info();
-    throw geometry_error(name + " lies on the segment between vertices " +
-                             std::to_string(std::min(a, b)) + " and " +
-                             std::to_string(std::max(a, b)),
-                         {i});
-  }
-  const int level = cdt.is_infinite(f) ? 0 : f->info().level;
-  if (level == 0)
-    throw geometry_error(name + " lies outside the domain (not inside any loop)", {i});
-  if (level % 2 == 1)
-    throw geometry_error(name + " lies inside the meshed domain, not inside a hole loop", {i});
-  return f->info().owner;
-}
-
-/// Hole points lie inside holes (regions at even level >= 2), not on segments, and every
-/// region at even level >= 2 has a hole point. Point location with CGAL's walk, hole points
-/// visited in spatial (Hilbert) order with the previous face as hint.
-inline void check_holes(const pslg& g, const loops_with_triangulation& lt) {
-  const auto& t = lt.triangulation;
-  const auto& loops = lt.structure.loops;
-  std::vector<char> has_hole(loops.size(), 0);
-  std::vector<epick::Point_2> pts;
-  pslg_cdt::Face_handle hint;
-  for (std::size_t i : holes_in_spatial_order(g, pts)) {
-    pslg_cdt::Locate_type lt_type;
-    int li = 0;
-    const auto f = t.cdt.locate(pts[i], lt_type, li, hint);
-    hint = f;
-    has_hole[hole_loop_of(g, t.cdt, i, f, lt_type, li)] = 1;
-  }
-  for (std::size_t l = 0; l < loops.size(); ++l)
-    if (!loops[l].bounds_domain_inside && !has_hole[l])
-      throw geometry_error("loop " + std::to_string(l) + " (through vertex " +
-                               std::to_string(loops[l].vertices[0]) + " " +
-                               coords(g.vertices[loops[l].vertices[0]]) +
-                               ") encloses a region with no hole point: internal boundaries are "
-                               "not supported yet",
-                           {l});
 }
 
 } // namespace pdd::detail

@@ -25,8 +25,10 @@ namespace pdd::cgal {
 /// (criteria.max_area and a SizingField) — dissertation ch. 1.1 and 6.1, the sequential mesher
 /// every subdomain is handed to. Models pdd::DelaunayMesher; see its semantics.
 ///
-/// Differences from CGAL's Delaunay_mesher_2: the domain is marked before refinement (odd
-/// nesting of segment loops, less hole regions, see concepts/delaunay_mesher.hpp), a segment
+/// Differences from CGAL's Delaunay_mesher_2: the domain is marked before refinement (by
+/// d.rule: odd nesting of segment loops or Triangle's rule, less hole regions, see
+/// concepts/delaunay_mesher.hpp; internal and dangling constraints and isolated vertices are
+/// kept as mesh edges and vertices), a segment
 /// counts as encroached only by vertices on a side of it that lies in the domain (as in
 /// Triangle), a bad face is left unrefined by the cluster rule for small input angles only when
 /// the small angle lies in the domain (CGAL also did so at sharp corners of holes and notches,
@@ -70,7 +72,7 @@ private:
     dm::cdt tr;
     const std::vector<dm::vertex_handle> vh = dm::build_cdt(tr, d);
     if (tr.dimension() == 2) {
-      dm::mark_domain(tr, d.holes);
+      dm::mark_domain(tr, d.holes, d.rule);
       sizing_criteria<dm::cdt, S> crit(c.shape_bound(), c.max_area, sizing);
       dm::refine(tr, crit);
     }

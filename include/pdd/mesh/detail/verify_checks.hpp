@@ -8,6 +8,7 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/mesh/detail/verify.hpp>
 #include <pdd/mesh/verification_report.hpp>
@@ -190,6 +191,31 @@ inline void report_segments(const triangle_mesh& m, const pslg& d,
   }
 }
 
+/// Reports the isolated input vertices (on no segment) that lie inside the domain but are no
+/// vertex of a mesh triangle (domain_rule::triangle; odd nesting has closed loops only). The
+/// domain's faces are located only when there are such vertices.
+inline void report_isolated_vertices(const pslg& d, const verify_impl::vertex_lookup& lookup,
+                                     const verify_impl::edge_table& table, violation_sink& sink) {
+  if (d.rule != domain_rule::triangle) return;
+  std::vector<char> on_segment(d.vertices.size(), 0);
+  for (const segment& sg : d.segments)
+    for (const index_t v : {sg.a, sg.b})
+      if (v < on_segment.size()) on_segment[v] = 1;
+  if (std::find(on_segment.begin(), on_segment.end(), 0) == on_segment.end()) return;
+  const domain_faces faces(d);
+  for (std::size_t v = 0; v < d.vertices.size(); ++v) {
+    if (on_segment[v]) continue;
+    const auto it = lookup.find(d.vertices[v]);
+    bool used = false;
+    if (it != lookup.end()) table.for_each_incident(it->second, [&](index_t) { used = true; });
+    if (used || !faces.touches_domain(static_cast<index_t>(v))) continue;
+    sink.add(sink.r.missing_vertices, [&] {
+      return "input vertex " + std::to_string(v) + " at " + verify_impl::str(d.vertices[v]) +
+             " lies inside the domain but is no vertex of the mesh";
+    });
+  }
+}
+
 /// Reports nonmanifold edges, boundary edges on no segment and non-Delaunay edges.
 inline void report_edges(const triangle_mesh& m, const verify_impl::edge_table& table,
                          const std::vector<std::uint8_t>& flags, violation_sink& sink) {
@@ -245,6 +271,7 @@ verification_report verify_run(const triangle_mesh& m, const pslg& d, const veri
   verify_impl::edge_table table(m, valid);
   const std::vector<std::uint8_t> edge_flags = check_edges(m, table);
   report_segments(m, d, lookup, table, sink);
+  report_isolated_vertices(d, lookup, table, sink);
   report_edges(m, table, edge_flags, sink);
   r.area_mesh = mesh_area(m, tri_flags);
   r.area_domain = domain_area(d);

@@ -8,9 +8,11 @@
 #include <pdd/core/bbox.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/geometry/domain_faces.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/pipeline/planning.hpp>
 #include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/inverse_area_integral.hpp>
 #include <pdd/sizing/mesh_size_estimate.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 
@@ -28,6 +30,22 @@ inline mesh_size_estimate estimate_plan(const pslg& domain, const mesh_criteria&
                                         const any_sizing& sizing, double shield_area) {
   return estimate_mesh_size(domain, criteria.max_area, sizing, sizing ? std::size_t{1} << 16 : 1,
                             shield_area);
+}
+
+/// The plan's triangle estimate for a domain that is not one of closed loops (domain_rule::
+/// triangle; pdd::estimate_mesh_size's feature terms need loops): the integral of
+/// 1 / (0.656 min(max_area, F)) over its faces (pdd::inverse_area_integral), at least the
+/// triangles of its constrained Delaunay triangulation. Small features are not counted, so the
+/// estimate is low where the kernel grades down to them. Complexity O(n log n + samples).
+inline mesh_size_estimate estimate_faces(const pslg& domain, const mesh_criteria& criteria,
+                                         const any_sizing& sizing) {
+  mesh_size_estimate e;
+  e.area_triangles =
+      inverse_area_integral(domain, criteria.max_area, sizing, sizing ? std::size_t{1} << 16 : 1) /
+      mean_triangle_area_fraction;
+  e.triangles =
+      std::max(e.area_triangles, static_cast<double>(domain_faces(domain).triangles().size()));
+  return e;
 }
 
 /// m(D_i) for every subdomain: pdd::sizing_range's lower bound over the subdomain's bounding

@@ -22,6 +22,13 @@
 /// ping-pong that clusters exist to stop). The rule below is CGAL's, except that a face is
 /// dropped only when the cluster has a small angle whose faces are in the domain; otherwise
 /// the encroached segment is split and the face is reconsidered, as in Ruppert's algorithm.
+///
+/// Domains that are not of closed loops (internal and dangling constraints, issue 13) are meshed
+/// whole and unshielded, since pdd's shields are built on closed loops: there the clusters are
+/// the remedy for small angles between constraints inside the domain (concentric shells, as in
+/// Triangle), and the faces this rule leaves are the documented exemption
+/// (pdd::find_cluster_exempt_triangles, mesh/cluster_exempt.hpp). The decoupling proofs are
+/// not involved: such domains are never decomposed (the pipeline refuses N > 1 for them).
 #pragma once
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -110,6 +111,33 @@ class domain_edges_base : public domain_cluster_edges_base<Tr, domain_gabriel<Tr
 public:
   domain_edges_base(Tr& t, CGAL::Mesh_2::Clusters<Tr>& c) : super(t, c) {}
 
+  /// CGAL's conflict zone of the split point p of a constrained edge, after checking what
+  /// CGAL only asserts in debug builds: one of the edge's two faces conflicts with p (its
+  /// circumcircle holds p), and when the first does not, p lies in the second. With two
+  /// constraints at a tiny angle (a fraction of a degree) the rounded split point of one can
+  /// fall beyond the other, and the zone would corrupt the triangulation.
+  /// \throws meshing_error naming the segment's endpoints.
+  template <class Edge>
+  auto conflicts_zone_impl(const typename Tr::Point& p, Edge edge) {
+    typename Tr::Locate_type type{};
+    int li = 0;
+    const Face_handle at = this->tr.locate(p, type, li, edge.first);
+    const Face_handle f = edge.first, n = f->neighbor(edge.second);
+    const bool on_edge = type == Tr::EDGE;
+    const bool f_conflicts = on_edge || this->tr.test_conflict(p, f);
+    const bool n_conflicts = on_edge || this->tr.test_conflict(p, n);
+    if ((!f_conflicts && n != at) || !(f_conflicts || n_conflicts)) {
+      std::ostringstream what;
+      what.precision(17);
+      what << "the segment from " << f->vertex(Tr::cw(edge.second))->point() << " to "
+           << f->vertex(Tr::ccw(edge.second))->point()
+           << " cannot be split: its rounded split point falls beyond a neighbouring segment (an "
+              "input angle too small to resolve in double precision)";
+      throw meshing_error(-1, what.str());
+    }
+    return super::conflicts_zone_impl(p, edge);
+  }
+
   void after_insertion_impl(const Vertex_handle& v) {
     restore_marks(v);
     const vertex_info& a = this->visitor_va->info();
@@ -156,13 +184,15 @@ inline void mark_nesting(cdt& tr) {
   flood_levels(tr, [](face_handle f) -> int& { return f->info(); });
 }
 
-/// Marks the domain: faces enclosed by an odd number of constrained loops (odd nesting
-/// level), less the constraint-bounded regions that contain a hole point.
-/// Complexity O(faces + holes * locate).
-inline void mark_domain(cdt& tr, const std::vector<point>& holes) {
+/// Marks the domain by `rule` (pdd::domain_rule): odd_nesting, faces enclosed by an odd number
+/// of constrained loops (odd nesting level); triangle, faces not reachable from the infinite
+/// face without crossing a constraint (level >= 1); either less the constraint-bounded regions
+/// that contain a hole point. Complexity O(faces + holes * locate).
+inline void mark_domain(cdt& tr, const std::vector<point>& holes, domain_rule rule) {
   mark_nesting(tr);
+  const bool odd = rule == domain_rule::odd_nesting;
   for (auto f = tr.all_faces_begin(); f != tr.all_faces_end(); ++f)
-    f->set_in_domain(!tr.is_infinite(f) && f->info() % 2 == 1);
+    f->set_in_domain(!tr.is_infinite(f) && (odd ? f->info() % 2 == 1 : f->info() >= 1));
   std::vector<face_handle> stack;
   for (const point& h : holes) {
     const face_handle f = tr.locate(cgal_point(h.x, h.y));

@@ -141,14 +141,15 @@ struct flood_view {
   face_ref infinite_face() const noexcept { return {tr, tr->vertex_tri[outer_vertex]}; }
 };
 
-/// Marks the domain: odd nesting level (Triangle's convention), less every region reached
-/// from a hole point without crossing a segment.
+/// Marks the domain by d.rule: odd nesting level, or (Triangle's rule) level >= 1, less every
+/// region reached from a hole point without crossing a segment.
 inline void mark_domain(triangulation& tr, const pslg& d) {
   std::vector<int> level(tr.size(), -1);
   flood_levels(flood_view{&tr, static_cast<index_t>(d.vertices.size())},
                [&level](face_ref f) -> int& { return level[f.t]; });
   for (std::uint32_t t = 0; t < tr.size(); ++t)
-    if (level[t] % 2 == 1) tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] | in_domain_bit);
+    if (d.rule == domain_rule::odd_nesting ? level[t] % 2 == 1 : level[t] >= 1)
+      tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] | in_domain_bit);
   std::vector<std::uint32_t> stack;
   std::uint32_t rng = 777u;
   for (const point& h : d.holes) {

@@ -1,0 +1,171 @@
+// General PSLGs (Triangle's rule, issue 13): a layered domain with regional attributes
+// (internal constraints, vertices of degree 3 and 4), holes that touch each other and the outer
+// boundary at pinch vertices, a T-junction (brick wall) grid, a combined one (dangling crack,
+// isolated well, internal boundary), and random arrangements with internal and dangling
+// constraints and isolated vertices.
+#pragma once
+
+#include <pdd/core/pslg.hpp>
+#include <pdd/geometry/validate.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <numbers>
+#include <random>
+#include <utility>
+#include <vector>
+
+namespace pdd::test {
+
+/// A 10 x 6 rectangle in five layers: internal constraints y = 2 and y = 4 across it and
+/// x = 5 from y = 0 to y = 4 ((5, 2) has degree 4, (5, 0), (5, 4), (0, 2), ... degree 3). One
+/// region point per face: attributes 1..5, maximum areas `area` times 1, 2, 4, 2, 8.
+inline pslg layered_domain(double area = 0.02) {
+  pslg g;
+  const std::vector<point> outer = {{0, 0},  {5, 0}, {10, 0}, {10, 2}, {10, 4},
+                                    {10, 6}, {0, 6}, {0, 4},  {0, 2}};
+  g.add_loop(outer, 1);                    // vertices 0..8
+  const index_t m2 = g.add_vertex({5, 2}); // 9
+  const index_t m4 = g.add_vertex({5, 4}); // 10
+  for (const auto& [a, b] : std::vector<std::pair<index_t, index_t>>{
+           {8, m2}, {m2, 3}, {7, m4}, {m4, 4}, {1, m2}, {m2, m4}})
+    g.add_segment(a, b, 2);
+  const double scale[] = {1, 2, 4, 2, 8};
+  const point seeds[] = {{2.5, 1}, {7.5, 1}, {2.5, 3}, {7.5, 3}, {5, 5}};
+  for (int r = 0; r < 5; ++r)
+    g.regions.push_back({seeds[r], static_cast<double>(r + 1), area * scale[r]});
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// A 10 x 10 square with two diamond holes touching at the pinch vertex (5, 5) and a triangular
+/// hole touching the bottom edge at (5, 0) (every angle at the pinch vertices >= 60 deg).
+inline pslg pinched_rings() {
+  pslg g;
+  g.add_loop(std::vector<point>{{0, 0}, {5, 0}, {10, 0}, {10, 10}, {0, 10}}); // 0..4
+  const index_t p = g.add_vertex({5, 5});                                     // 5
+  const auto ring = [&](std::vector<point> others) {
+    index_t prev = p;
+    for (const point& q : others) {
+      const index_t v = g.add_vertex(q);
+      g.add_segment(prev, v);
+      prev = v;
+    }
+    g.add_segment(prev, p);
+  };
+  ring({{3.5, 6.5}, {2, 5}, {3.5, 3.5}});
+  ring({{6.5, 3.5}, {8, 5}, {6.5, 6.5}});
+  const index_t a = g.add_vertex({6, 2}), b = g.add_vertex({4, 2});
+  g.add_segment(1, a);
+  g.add_segment(a, b);
+  g.add_segment(b, 1);
+  g.holes = {{3.5, 5}, {6.5, 5}, {5, 1.2}};
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// A 4 x 4 square as a brick wall: internal constraints y = 1, 2, 3 across it and vertical
+/// ones between them at x = 1, 3 (odd rows) and x = 2 (even rows): T-junctions everywhere.
+inline pslg t_junction_grid() {
+  pslg g;
+  std::vector<point> outer;
+  for (int x = 0; x < 4; ++x)
+    outer.push_back({static_cast<double>(x), 0});
+  for (int y = 0; y < 4; ++y)
+    outer.push_back({4, static_cast<double>(y)});
+  for (int x = 4; x > 0; --x)
+    outer.push_back({static_cast<double>(x), 4});
+  for (int y = 4; y > 0; --y)
+    outer.push_back({0, static_cast<double>(y)});
+  g.add_loop(outer);
+  const auto vertex = [&](double x, double y) {
+    for (index_t v = 0; v < g.vertices.size(); ++v)
+      if (g.vertices[v] == point{x, y}) return v;
+    return g.add_vertex({x, y});
+  };
+  for (int y = 1; y <= 3; ++y)
+    for (int x = 0; x < 4; ++x)
+      g.add_segment(vertex(x, y), vertex(x + 1, y));
+  for (int row = 0; row < 4; ++row) {
+    const std::vector<double> xs =
+        row % 2 == 0 ? std::vector<double>{1, 3} : std::vector<double>{2};
+    for (const double x : xs)
+      g.add_segment(vertex(x, row), vertex(x, row + 1));
+  }
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// The layered domain plus a dangling crack in the bottom-left face, an isolated well in the
+/// top face, and an internal boundary (a square loop without hole point) in the bottom-right
+/// face; regions as layered_domain.
+inline pslg combined_domain(double area = 0.02) {
+  pslg g = layered_domain(area);
+  g.add_segment(g.add_vertex({1, 0.5}), g.add_vertex({2, 1.5}), 3);
+  g.add_vertex({7.5, 5}, 4);
+  g.add_loop(std::vector<point>{{7, 0.5}, {8, 0.5}, {8, 1.5}, {7, 1.5}}, 5);
+  return g;
+}
+
+/// True when segment (a, b) would meet a segment of g at a shared endpoint at less than
+/// `min_deg` degrees (tinier input angles than double precision resolves make the kernel refuse
+/// the domain with a meshing_error, see kernels/cgal/detail/mesher.hpp).
+inline bool makes_small_angle(const pslg& g, index_t a, index_t b, double min_deg) {
+  const auto angle = [&](index_t v, index_t p, index_t q) {
+    const point &o = g.vertices[v], &x = g.vertices[p], &y = g.vertices[q];
+    const double ux = x.x - o.x, uy = x.y - o.y, wx = y.x - o.x, wy = y.y - o.y;
+    return std::abs(std::atan2(ux * wy - uy * wx, ux * wx + uy * wy)) * 180.0 / std::numbers::pi;
+  };
+  for (const segment& s : g.segments)
+    for (const auto& [v, other] : {std::pair{a, b}, std::pair{b, a}}) {
+      if (s.a != v && s.b != v) continue;
+      if (angle(v, other, s.a == v ? s.b : s.a) < min_deg) return true;
+    }
+  return false;
+}
+
+/// A random arrangement in the unit square: the outer loop through two random points per side,
+/// isolated vertices on a jittered 5 x 5 grid, then up to `tries` random segments between
+/// vertices kept when the PSLG stays valid and no angle at a shared endpoint is below 10 deg
+/// (internal constraints, dangling segments and chains, small angles down to 10 deg); the
+/// vertices left on no segment stay isolated. Deterministic for a seed.
+inline pslg random_arrangement(std::uint32_t seed, int tries = 14) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.2, 0.8), jitter(-0.06, 0.06);
+  pslg g;
+  std::vector<point> outer{{0, 0}};
+  const double s0 = u(rng) * 0.5, s1 = 0.5 + u(rng) * 0.5;
+  for (const double s : {s0, s1})
+    outer.push_back({s, 0});
+  outer.push_back({1, 0});
+  for (const double s : {s0, s1})
+    outer.push_back({1, s});
+  outer.push_back({1, 1});
+  for (const double s : {s1, s0})
+    outer.push_back({s, 1});
+  outer.push_back({0, 1});
+  for (const double s : {s1, s0})
+    outer.push_back({0, s});
+  g.add_loop(outer);
+  for (int i = 1; i < 5; ++i)
+    for (int j = 1; j < 5; ++j)
+      if (rng() % 3 != 0) g.add_vertex({i / 5.0 + jitter(rng), j / 5.0 + jitter(rng)});
+  std::uniform_int_distribution<std::size_t> pick(0, g.vertices.size() - 1);
+  for (int t = 0; t < tries; ++t) {
+    const index_t a = static_cast<index_t>(pick(rng)), b = static_cast<index_t>(pick(rng));
+    if (a == b || makes_small_angle(g, a, b, 10.0)) continue;
+    pslg trial = g;
+    trial.add_segment(a, b);
+    try {
+      validate(trial, {.check_domain = false});
+    } catch (const geometry_error&) {
+      continue; // crosses, overlaps or duplicates a segment
+    }
+    g = std::move(trial);
+  }
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+} // namespace pdd::test

@@ -1,0 +1,237 @@
+// Issue 13, the monolithic half: every PSLG Triangle accepts (internal and dangling
+// constraints, isolated vertices, loops touching at pinch vertices, internal boundaries) is
+// meshed whole by pdd::generate, verified (exact Delaunay, every constraint a union of mesh
+// edges, isolated vertices as mesh vertices, the area of the faces, the area bound per face,
+// the angle bound outside the cluster-exempt triangles), bitwise the same on 1 and 2 threads,
+// with triangle counts close to Triangle 1.6's; N > 1 asked for is refused, automatic N is one
+// subdomain with the reason in the statistics.
+#include "general_domains.hpp"
+#include "mesh_compare.hpp"
+#include "test_support.hpp"
+
+#include <pdd/generate.hpp>
+#include <pdd/io/poly.hpp>
+#include <pdd/mesh/cluster_exempt.hpp>
+#include <pdd/mesh/quality_check.hpp>
+#include <pdd/mesh/verify.hpp>
+#include <pdd/sizing/regional.hpp>
+#include <pdd/triangle/triangulate.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+namespace {
+
+using pdd::pslg;
+
+pdd::generate_options options(double max_area, unsigned threads = 1) {
+  pdd::generate_options o;
+  o.criteria.min_angle_deg = 20.7;
+  o.criteria.max_area = max_area;
+  o.threads = threads;
+  return o;
+}
+
+/// Expects m to be a verified mesh of d (rule triangle) under 20.7 deg and max_area, with the
+/// sizing field for the area bound; returns the number of cluster-exempt triangles.
+template <class S = pdd::uniform_sizing>
+std::size_t expect_verified(const pdd::triangle_mesh& m, const pslg& d, double max_area,
+                            const std::string& at, const S& sizing = {}) {
+  pdd::verify_options vo;
+  vo.criteria.min_angle_deg = 20.7;
+  vo.criteria.max_area = max_area;
+  vo.quality_exempt = pdd::find_cluster_exempt_triangles(m, d, 20.7);
+  const pdd::verification_report rep = pdd::verify(m, d, vo, sizing);
+  EXPECT_TRUE(rep.ok()) << at << ": delaunay " << rep.delaunay_violations << " missing "
+                        << rep.missing_segments << " vertices " << rep.missing_vertices
+                        << " quality " << rep.quality_violations << " area " << rep.area_violations
+                        << " nonmanifold " << rep.nonmanifold_edges << " area " << rep.area_mesh
+                        << " vs " << rep.area_domain
+                        << (rep.messages.empty() ? "" : "\n" + rep.messages.front());
+  std::size_t exempt = 0;
+  for (const char e : vo.quality_exempt)
+    exempt += e != 0;
+  return exempt;
+}
+
+/// One named domain, its area bound and Triangle 1.6's triangle count for
+/// `triangle -pq20.7a<area>` on the same .poly (written by pdd::write_poly without regions).
+struct reference_case {
+  const char* name;
+  pslg domain;
+  double max_area;
+  std::size_t triangle_count;
+};
+
+std::vector<reference_case> own_cases() {
+  // Triangle 1.6: triangle -pq20.7a0.02 layered.poly -> 4623; -pq20.7a0.05 pinched.poly -> 2748;
+  // -pq20.7a0.005 tgrid.poly -> 4978; -pq20.7a0.02 combined.poly -> 4618
+  return {{"layered", pdd::test::layered_domain(), 0.02, 4623},
+          {"pinched", pdd::test::pinched_rings(), 0.05, 2748},
+          {"tgrid", pdd::test::t_junction_grid(), 0.005, 4978},
+          {"combined", pdd::test::combined_domain(), 0.02, 4618}};
+}
+
+void expect_close_to_triangle(std::size_t pdd_count, std::size_t triangle_count,
+                              const std::string& at) {
+  const double ratio = static_cast<double>(pdd_count) / static_cast<double>(triangle_count);
+  EXPECT_NEAR(ratio, 1.0, 0.06) << at << ": pdd " << pdd_count << ", Triangle " << triangle_count;
+}
+
+TEST(GeneralPslg, OwnDomainsAreMeshedWholeVerifiedAndDeterministic) {
+  for (const reference_case& c : own_cases()) {
+    SCOPED_TRACE(c.name);
+    pslg input = c.domain;
+    input.rule = pdd::domain_rule::odd_nesting; // as read from a file: the pipeline decides
+    input.regions.clear();
+    const pdd::generate_result one = pdd::generate(input, options(c.max_area, 1));
+    const pdd::generate_result two = pdd::generate(input, options(c.max_area, 2));
+    EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, two.mesh));
+    EXPECT_TRUE(one.statistics.general_domain);
+    EXPECT_EQ(one.statistics.subdomains, 1u);
+    EXPECT_EQ(one.statistics.path, "monolithic");
+    EXPECT_NE(one.statistics.plan_reason.find("not one of closed loops"), std::string::npos);
+    EXPECT_EQ(expect_verified(one.mesh, c.domain, c.max_area, c.name), 0u); // no angle < 60
+    expect_close_to_triangle(one.mesh.triangles.size(), c.triangle_count, c.name);
+    EXPECT_NO_THROW(pdd::check_quality(one.mesh, c.domain, options(c.max_area).criteria));
+  }
+}
+
+TEST(GeneralPslg, EachKindOfInputAlone) {
+  const auto square = [] {
+    pslg g;
+    g.add_loop(std::vector<pdd::point>{{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    return g;
+  };
+  std::vector<std::pair<std::string, pslg>> cases;
+  pslg internal = square();
+  internal.add_segment(0, 2); // a diagonal between two faces
+  cases.emplace_back("internal constraint", internal);
+  pslg dangling = square();
+  dangling.add_segment(dangling.add_vertex({1, 1}), dangling.add_vertex({2.5, 3}));
+  cases.emplace_back("dangling segment", dangling);
+  pslg isolated = square();
+  isolated.add_vertex({1.3, 2.7});
+  isolated.add_vertex({3.1, 0.9});
+  cases.emplace_back("isolated vertices", isolated);
+  pslg nested = square();
+  nested.add_loop(std::vector<pdd::point>{{1, 1}, {3, 1}, {3, 3}, {1, 3}});
+  cases.emplace_back("internal boundary", nested);
+  cases.emplace_back("pinch vertices", pdd::test::pinched_rings());
+  for (auto& [name, g] : cases) {
+    SCOPED_TRACE(name);
+    const pdd::generate_result r = pdd::generate(g, options(0.05));
+    g.rule = pdd::domain_rule::triangle;
+    expect_verified(r.mesh, g, 0.05, name);
+  }
+  // an internal boundary keeps its inner square as domain: the area is the whole square's
+  const pdd::generate_result r = pdd::generate(cases[3].second, options(0.05));
+  pdd::verify_options vo;
+  vo.criteria = options(0.05).criteria;
+  EXPECT_NEAR(pdd::verify(r.mesh, cases[3].second, vo).area_mesh, 16.0, 1e-9);
+}
+
+TEST(GeneralPslg, RegionalAttributesAndAreasPerFace) {
+  for (const bool combined : {false, true}) {
+    SCOPED_TRACE(combined ? "combined" : "layered");
+    const pslg d = combined ? pdd::test::combined_domain(0.01) : pdd::test::layered_domain(0.01);
+    const auto sw = pdd::triangle::parse_switches("pq20.7aA");
+    const pdd::triangle::triangulation t = pdd::triangle::triangulate(d, sw);
+    ASSERT_EQ(t.triangle_attributes.size(), t.mesh.triangles.size());
+    // every triangle carries its face's attribute and meets its face's area bound
+    const pdd::domain_faces faces(d);
+    std::vector<std::size_t> per_attribute(6, 0);
+    for (std::size_t i = 0; i < t.mesh.triangles.size(); ++i) {
+      const auto& tri = t.mesh.triangles[i];
+      const pdd::point a = t.mesh.vertices[tri[0]], b = t.mesh.vertices[tri[1]],
+                       c = t.mesh.vertices[tri[2]];
+      const pdd::point centroid{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+      const pdd::face_location at = faces.locate(centroid);
+      ASSERT_EQ(at.where, pdd::face_location::kind::inside);
+      double expected = 0.0;
+      for (std::size_t r = 0; r < d.regions.size(); ++r)
+        if (faces.locate(d.regions[r].p).face == at.face) expected = d.regions[r].attribute;
+      ASSERT_EQ(t.triangle_attributes[i], expected) << i;
+      ++per_attribute[static_cast<std::size_t>(expected)];
+    }
+    for (std::size_t r = 1; r <= 5; ++r)
+      EXPECT_GT(per_attribute[r], 10u) << r;
+    const pdd::regional_sizing field(d);
+    expect_verified(t.mesh, d, std::numeric_limits<double>::infinity(), "regions", field);
+    // the finest layer (area 0.01) has more triangles per unit area than the coarsest (0.08)
+    EXPECT_GT(per_attribute[1] / 10.0, 4.0 * per_attribute[5] / 20.0);
+  }
+}
+
+TEST(GeneralPslg, SharedDataFiles) {
+  const auto dir = pdd::test::shared_data_dir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/data absent";
+  // Triangle 1.6: triangle -pq20.7a20 triangle_face.poly -> 1575 triangles;
+  // triangle -pq20.7a2000 cgal_clusters.poly -> 2302 triangles
+  const struct {
+    const char* file;
+    double max_area;
+    std::size_t triangle_count;
+    bool has_cluster;
+  } files[] = {{"triangle_face.poly", 20.0, 1575, false},
+               {"cgal_clusters.poly", 2000.0, 2302, true}};
+  for (const auto& f : files) {
+    SCOPED_TRACE(f.file);
+    pslg d = pdd::read_poly(dir / f.file);
+    const pdd::generate_result one = pdd::generate(d, options(f.max_area, 1));
+    const pdd::generate_result two = pdd::generate(d, options(f.max_area, 2));
+    EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, two.mesh));
+    d.rule = pdd::domain_rule::triangle;
+    const std::size_t exempt = expect_verified(one.mesh, d, f.max_area, f.file);
+    EXPECT_EQ(exempt > 0, f.has_cluster); // the 6.8 deg star of dangling segments
+    expect_close_to_triangle(one.mesh.triangles.size(), f.triangle_count, f.file);
+  }
+}
+
+TEST(GeneralPslg, SubdomainsAskedForAreRefused) {
+  pdd::generate_options o = options(0.02);
+  o.subdomains = 4;
+  try {
+    (void)pdd::generate(pdd::test::layered_domain(), o);
+    ADD_FAILURE() << "accepted";
+  } catch (const pdd::decomposition_error& e) {
+    EXPECT_NE(std::string(e.what()).find("subdomains = 4 needs a domain of closed loops"),
+              std::string::npos)
+        << e.what();
+  }
+  o.subdomains = 0; // automatic: one subdomain, with the reason
+  const pdd::generate_result r = pdd::generate(pdd::test::layered_domain(), o);
+  EXPECT_EQ(r.statistics.subdomains, 1u);
+  EXPECT_TRUE(r.statistics.general_domain);
+}
+
+TEST(GeneralPslg, RandomArrangementsAreVerified) {
+  // 200 random arrangements of internal and dangling constraints and isolated vertices in the
+  // unit square, fixed seeds; every tenth also on 2 threads (bitwise the same)
+  std::size_t exempt = 0, triangles = 0, isolated = 0, checked = 0;
+  for (std::uint32_t seed = 1; seed <= 200; ++seed) {
+    const pslg d = pdd::test::random_arrangement(seed);
+    const pdd::generate_result r = pdd::generate(d, options(0.005));
+    exempt += expect_verified(r.mesh, d, 0.005, "seed " + std::to_string(seed));
+    triangles += r.mesh.triangles.size();
+    std::vector<char> on_segment(d.vertices.size(), 0);
+    for (const pdd::segment& s : d.segments)
+      on_segment[s.a] = on_segment[s.b] = 1;
+    for (const char c : on_segment)
+      isolated += c == 0;
+    if (seed % 10 == 0) {
+      EXPECT_TRUE(pdd::test::bitwise_equal(r.mesh, pdd::generate(d, options(0.005, 2)).mesh));
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 200u);
+  EXPECT_GT(isolated, 100u); // isolated vertices occur
+  EXPECT_GT(triangles, 50000u);
+  EXPECT_LT(exempt, triangles / 100); // exemptions stay rare
+}
+
+} // namespace
