@@ -152,7 +152,7 @@ void read_input(const cli_options& o, mesh_run& r) {
   // internal boundaries): Triangle's rule, meshed whole (--subdomains > 1 is refused).
   if (!r.props.closed_loops) {
     r.domain.rule = pdd::domain_rule::triangle;
-    if (!o.quiet)
+    if (!o.quiet && o.subdomains <= 1) // more is refused by the pipeline, with the reason
       std::printf("pdd-mesh: the domain is not one of closed loops: meshed whole (one "
                   "subdomain), small angles between segments by the kernel's clusters\n");
   }
