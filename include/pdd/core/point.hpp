@@ -5,6 +5,8 @@
 #include <pdd/core/index.hpp>
 
 #include <compare>
+#include <cstdio>
+#include <string>
 
 namespace pdd {
 
@@ -14,5 +16,13 @@ struct point {
   double y = 0.0;
   friend constexpr auto operator<=>(const point&, const point&) = default;
 };
+
+/// "(x, y)" with 17 significant digits (reads back to the same doubles): how pdd's messages
+/// name a location.
+inline std::string to_string(const point& p) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
+  return buf;
+}
 
 } // namespace pdd

@@ -55,14 +55,11 @@ inline double squared_distance(const point& a, const point& b) noexcept {
   return dx * dx + dy * dy;
 }
 
-/// sin^2 of the smallest angle of (a, b, c), CGAL's shape measure: (2 area)^2 over the
-/// product of the two longest squared edge lengths (the smallest angle lies between them).
-inline double squared_sine_min_angle(const point& a, const point& b, const point& c) noexcept {
-  const double la = squared_distance(b, c);
-  const double lb = squared_distance(c, a);
-  const double lc = squared_distance(a, b);
+/// sin^2 of the smallest angle of a triangle from twice its signed area and its squared edge
+/// lengths, CGAL's shape measure: (2 area)^2 over the product of the two longest squared edge
+/// lengths (the smallest angle lies between them).
+inline double squared_sine_min_angle(double two_area, double la, double lb, double lc) noexcept {
   const double shortest = std::min({la, lb, lc});
-  const double two_area = twice_signed_area(a, b, c);
   // la * lb * lc / shortest would round differently; pick the two longest explicitly.
   double p = 0.0;
   if (shortest == la)
@@ -72,6 +69,12 @@ inline double squared_sine_min_angle(const point& a, const point& b, const point
   else
     p = la * lb;
   return two_area * two_area / p;
+}
+
+/// sin^2 of the smallest angle of (a, b, c) (see the overload above).
+inline double squared_sine_min_angle(const point& a, const point& b, const point& c) noexcept {
+  return squared_sine_min_angle(twice_signed_area(a, b, c), squared_distance(b, c),
+                                squared_distance(c, a), squared_distance(a, b));
 }
 
 /// The angle of the triangle (o, p, q) at o, in degrees (atan2 of the cross and dot products,

@@ -16,18 +16,11 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <cstdio>
 #include <numeric>
 #include <string>
 #include <vector>
 
 namespace pdd::detail {
-
-inline std::string coords(const point& p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
-  return buf;
-}
 
 /// A PSLG's constrained triangulation with every triangle labelled by its face, and which
 /// faces are the domain by Triangle's rule.
@@ -95,7 +88,7 @@ inline std::vector<std::size_t> holes_in_spatial_order(const pslg& g,
 /// the unbounded face.
 inline index_t hole_face_of(const pslg& g, const pslg_cdt& cdt, std::size_t i,
                             pslg_cdt::Face_handle f, pslg_cdt::Locate_type lt_type, int li) {
-  const std::string name = "hole point " + std::to_string(i) + " " + coords(g.holes[i]);
+  const std::string name = "hole point " + std::to_string(i) + " " + pdd::to_string(g.holes[i]);
   if (lt_type == pslg_cdt::VERTEX)
     throw geometry_error(
         name + " lies on vertex " + std::to_string(f->vertex(li)->info()) + ", on a segment", {i});

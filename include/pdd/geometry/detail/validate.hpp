@@ -26,8 +26,8 @@ namespace pdd::detail {
 
 inline std::string seg_text(const pslg& g, std::size_t s) {
   return "segment " + std::to_string(s) + " (vertices " + std::to_string(g.segments[s].a) + " " +
-         coords(g.vertices[g.segments[s].a]) + " and " + std::to_string(g.segments[s].b) + " " +
-         coords(g.vertices[g.segments[s].b]) + ")";
+         pdd::to_string(g.vertices[g.segments[s].a]) + " and " + std::to_string(g.segments[s].b) +
+         " " + pdd::to_string(g.vertices[g.segments[s].b]) + ")";
 }
 
 /// At least 3 vertices; finite coordinates of vertices, hole points and region points.
@@ -39,17 +39,17 @@ inline void check_coordinates(const pslg& g) {
   for (std::size_t i = 0; i < g.vertices.size(); ++i)
     if (!finite(g.vertices[i]))
       throw geometry_error("vertex " + std::to_string(i) + " has a non-finite coordinate " +
-                               coords(g.vertices[i]),
+                               pdd::to_string(g.vertices[i]),
                            {i});
   for (std::size_t i = 0; i < g.holes.size(); ++i)
     if (!finite(g.holes[i]))
       throw geometry_error("hole point " + std::to_string(i) + " has a non-finite coordinate " +
-                               coords(g.holes[i]),
+                               pdd::to_string(g.holes[i]),
                            {i});
   for (std::size_t i = 0; i < g.regions.size(); ++i)
     if (!finite(g.regions[i].p))
       throw geometry_error("region point " + std::to_string(i) + " has a non-finite coordinate " +
-                               coords(g.regions[i].p),
+                               pdd::to_string(g.regions[i].p),
                            {i});
 }
 
@@ -69,7 +69,7 @@ inline void check_duplicate_vertices(const pslg& g) {
   if (first)
     throw geometry_error("duplicate vertices " + std::to_string(first->first) + " and " +
                              std::to_string(first->second) + " have the same coordinates " +
-                             coords(g.vertices[first->first]),
+                             pdd::to_string(g.vertices[first->first]),
                          {first->first, first->second});
 }
 
@@ -154,8 +154,8 @@ inline void check_intersections(const pslg& g) {
   using kind = segment_clash::kind;
   if (first->type == kind::touch)
     throw geometry_error("vertex " + std::to_string(first->vertex) + " " +
-                             coords(g.vertices[first->vertex]) + " lies in the interior of " +
-                             seg_text(g, first->on) + more,
+                             pdd::to_string(g.vertices[first->vertex]) +
+                             " lies in the interior of " + seg_text(g, first->on) + more,
                          {first->vertex, first->on});
   throw geometry_error(
       std::string(first->type == kind::cross ? "segments cross: " : "segments overlap: ") +

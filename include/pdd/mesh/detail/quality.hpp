@@ -36,11 +36,12 @@ struct statistics_accumulator {
                  lc = squared_distance(a, b);
     const std::array<double, 3> cosine{corner_cosine(la, lb, lc), corner_cosine(lb, lc, la),
                                        corner_cosine(lc, la, lb)};
-    smallest.offer(squared_sine_min_angle(a, b, c), a, b, c);
+    const double two_area = twice_signed_area(a, b, c);
+    smallest.offer(squared_sine_min_angle(two_area, la, lb, lc), a, b, c);
     largest.offer(std::min({cosine[0], cosine[1], cosine[2]}), a, b, c);
     for (const double c_k : cosine)
       ++histogram[degree_bin(c_k)];
-    const double tri_area = triangle_area(a, b, c);
+    const double tri_area = 0.5 * std::abs(two_area); // triangle_area's formula
     max_area = std::max(max_area, tri_area);
     area += tri_area;
     if (!std::isinf(bound)) max_area_ratio = std::max(max_area_ratio, tri_area / bound);

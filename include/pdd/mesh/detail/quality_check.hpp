@@ -15,13 +15,6 @@
 
 namespace pdd::detail {
 
-/// "(x, y)" with every digit of the coordinates.
-inline std::string describe_point(const point& p) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "(%.17g, %.17g)", p.x, p.y);
-  return buf;
-}
-
 /// What is wrong with triangle t (flags of detail::check_triangles), with its vertices.
 inline std::string describe_bad_triangle(const triangle_mesh& m, std::size_t t, std::uint8_t f,
                                          const mesh_criteria& criteria, double area_bound) {
@@ -36,7 +29,7 @@ inline std::string describe_bad_triangle(const triangle_mesh& m, std::size_t t, 
   std::snprintf(buf, sizeof buf, ": smallest angle %.6g deg (bound %.6g), area %.6g (bound %.6g)",
                 std::min({ang[0], ang[1], ang[2]}), criteria.min_angle_deg, triangle_area(a, b, c),
                 area_bound);
-  s += " " + describe_point(a) + " " + describe_point(b) + " " + describe_point(c) + buf;
+  s += " " + pdd::to_string(a) + " " + pdd::to_string(b) + " " + pdd::to_string(c) + buf;
   if (f & tri_orientation) s += "; not counter-clockwise";
   if (f & tri_quality) s += "; below the angle bound and not a shielded triangle";
   if (f & tri_area) s += "; above the area bound";
