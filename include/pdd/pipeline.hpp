@@ -33,12 +33,11 @@
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
 #include <pdd/pipeline/detail/sizing_plan.hpp>
+#include <pdd/pipeline/detail/whole_domain.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/planning.hpp>
 #include <pdd/pipeline/statistics.hpp>
 #include <pdd/pipeline/system.hpp>
-#include <pdd/shielding/apply_shields.hpp>
-#include <pdd/shielding/shield.hpp>
 #include <pdd/shielding/shield_decomposition.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 #include <pdd/sizing/sizing_range.hpp>
@@ -84,7 +83,7 @@ public:
         executor_(detail::make_executor<E>(options_.threads)) {
     check_generate_options(options_);
     general_ = !has_closed_loops(domain_); // validates
-    if (general_) plan_general_domain();
+    if (general_) detail::plan_general_domain(domain_, options_);
     area_ = domain_area(domain_);
     stats_.threads = executor_.concurrency();
     if (options_.sizing) sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
@@ -245,18 +244,8 @@ public:
   }
   /// As mesh_whole(); `shielded_triangles` receives the number of shielded triangles.
   triangle_mesh mesh_whole(std::size_t& shielded_triangles) const {
-    shielded_triangles = 0;
-    if (general_) return mesher_.mesh(domain_, options_.criteria, options_.sizing).mesh;
-    const shielded_domain sd = shield(domain_, decoupling_criteria().max_area);
-    shielded_triangles = sd.triangles.size();
-    if (sd.triangles.empty()) return mesher_.mesh(domain_, options_.criteria, options_.sizing).mesh;
-    mesher_result r = mesher_.mesh(sd.domain, options_.criteria, options_.sizing);
-    const std::size_t splits = add_shield_triangles(r, sd.domain, sd.triangles, 0);
-    if (splits != 0)
-      throw meshing_error(-1, std::to_string(splits) +
-                                  " shield edge(s) were split by the kernel (Theorem 24 (5) "
-                                  "excludes it for a Ruppert-type kernel)");
-    return std::move(r.mesh);
+    return detail::mesh_whole_domain(mesher_, domain_, general_, options_.criteria, options_.sizing,
+                                     decoupling_criteria().max_area, shielded_triangles);
   }
 
   /// The statistics so far.
@@ -267,14 +256,6 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
-  /// Triangle's rule for the kernel, one subdomain. \throws pdd::decomposition_error for N > 1.
-  void plan_general_domain() {
-    domain_.rule = domain_rule::triangle;
-    if (options_.subdomains > 1)
-      throw decomposition_error(detail::general_domain_error(options_.subdomains));
-    options_.subdomains = 1;
-  }
-
   /// Stage 1 of the graded method: Algorithm 7.1 (see generate_options::gradation) into
   /// decomposition_, with its measurements in gradation_ and the statistics.
   void decompose_graded(const madd_options& mo) {
