@@ -103,6 +103,13 @@ inline void add_method_options(CLI::App& app, mesh_options& o) {
       ->check(CLI::IsMember({"cgal", "native"}));
 }
 
+/// True when a region of the domain carries a nonzero attribute (Triangle's -A): pdd-mesh
+/// writes them with -A and says so without it; pdd-mesh-mpi says it does not write them.
+inline bool has_region_attributes(const pdd::pslg& g) {
+  return std::any_of(g.regions.begin(), g.regions.end(),
+                     [](const pdd::region& r) { return r.attribute != 0.0; });
+}
+
 /// Registers the shared options on `app` (`threads_help` describes --threads) and returns the
 /// --output-per-subdomain option (pdd-mesh excludes other outputs with it).
 inline CLI::Option* add_mesh_options(CLI::App& app, mesh_options& o,

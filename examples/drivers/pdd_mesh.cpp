@@ -7,7 +7,7 @@
 //            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
 //            [--sizing EXPR] [--background FILE.node] [--area-grid FILE] [--max-triangles N]
 //            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
-//            [--geometric-sizing auto|on|off]
+//            [--geometric-sizing auto|on|off] [-A|--region-attributes]
 //
 // Exit codes: 0 ok, 1 bad input (also a run refused up front: its estimated size exceeds
 // --max-triangles or memory, or its per-subdomain output the free disk space), 2 usage, 3
@@ -30,6 +30,7 @@
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
+#include <pdd/mesh/region_attributes.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -49,9 +50,11 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <mutex>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace {
 
@@ -62,6 +65,7 @@ struct cli_options : pdd::drivers::mesh_options {
   std::string output, svg, svg_histogram;
   std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
   bool verify = false, compare_monolithic = false;
+  bool region_attributes = false; ///< -A: every triangle's regional attribute with the mesh
 };
 
 /// Stage lines and the progress bar on stderr, drawn only when stderr is a terminal.
@@ -136,6 +140,7 @@ struct mesh_run {
   std::optional<pdd::shielding_statistics> sst;
   std::optional<pdd::verification_report> report;
   std::optional<std::size_t> monolithic_triangles;
+  std::vector<double> attributes; ///< -A: the regional attribute of every triangle
   double t_read = 0.0, t_verify = 0.0, t_monolithic = 0.0, t_write = 0.0, t_total = 0.0;
 
   std::size_t triangles() const { return mesh ? mesh->triangles.size() : gs.triangles; }
@@ -156,6 +161,10 @@ void read_input(const cli_options& o, mesh_run& r) {
       std::printf("pdd-mesh: the domain is not one of closed loops: meshed whole (one "
                   "subdomain), small angles between segments by the kernel's clusters\n");
   }
+  if (!o.quiet && !o.region_attributes && has_region_attributes(r.domain))
+    std::printf("pdd-mesh: note: the regions of %s carry attributes; -A writes them with the "
+                "mesh\n",
+                o.input.c_str());
   r.t_read = pdd::seconds_since(t0);
   r.options = generate_options_for(o, r.domain, r.sizing_kind);
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
@@ -317,8 +326,20 @@ void add_sizing_stats(const mesh_run& r, nlohmann::json& j) {
   j["gradation_capped"] = r.gs.gradation_capped;
 }
 
+/// -A: the triangles of each regional attribute, in increasing attribute order.
+nlohmann::json region_attribute_stats(const std::vector<double>& attributes) {
+  std::map<double, std::size_t> count;
+  for (const double a : attributes)
+    ++count[a];
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& [a, n] : count)
+    out.push_back({{"attribute", a}, {"triangles", n}});
+  return out;
+}
+
 /// The verification, comparison, decomposition and timing part of the --stats JSON.
 void add_run_stats(const mesh_run& r, nlohmann::json& j) {
+  if (!r.attributes.empty()) j["region_attributes"] = region_attribute_stats(r.attributes);
   j["verified"] = r.report.has_value();
   j["delaunay_violations"] = r.report ? nlohmann::json(r.report->delaunay_violations) : nullptr;
   j["conforming"] = r.report ? nlohmann::json(r.report->ok()) : nullptr;
@@ -365,7 +386,7 @@ void print_summary(const cli_options& o, const mesh_run& r) {
 
 /// Writes the mesh, its SVG picture and its angle histogram where the options ask for them.
 void write_outputs(const cli_options& o, const mesh_run& r) {
-  if (r.mesh && !o.output.empty()) pdd::write_mesh(o.output, *r.mesh);
+  if (r.mesh && !o.output.empty()) pdd::write_mesh(o.output, *r.mesh, r.attributes);
   if (r.mesh && !o.svg.empty()) {
     pdd::svg_options so;
     so.shade_by_area = bool(r.options.sizing); // a graded mesh: show the grading
@@ -395,6 +416,7 @@ template <class M>
 void mesh_with_kernel(const cli_options& o, mesh_run& r, progress& bar) {
   generate_mesh<M>(o, r, bar);
   measure_and_verify(o, r, bar);
+  if (o.region_attributes && r.mesh) r.attributes = pdd::region_attributes(r.domain, *r.mesh);
   if (o.compare_monolithic) compare_monolithic<M>(r, bar);
 }
 
@@ -446,8 +468,13 @@ int main(int argc, char** argv) {
                   ->needs(svg);
   auto* hist = app.add_option("--svg-histogram", o.svg_histogram,
                               "draw the histogram of the triangle angles to this SVG file");
+  auto* attr = app.add_flag(
+      "-A,--region-attributes", o.region_attributes,
+      "every triangle carries the attribute of the .poly region in its face (0 without one; "
+      "Triangle's -A): .vtu cell data region_attribute, the .ele attribute column, .msh "
+      "physical tags (integer attributes)");
   auto* out = app.get_option("--output");
-  per->excludes(ver)->excludes(svg)->excludes(out)->excludes(win)->excludes(hist);
+  per->excludes(ver)->excludes(svg)->excludes(out)->excludes(win)->excludes(hist)->excludes(attr);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

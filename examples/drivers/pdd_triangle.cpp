@@ -12,6 +12,7 @@
 #include <pdd/io/poly.hpp>
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/mesh/quality.hpp>
+#include <pdd/mesh/region_attributes.hpp>
 #include <pdd/triangle/file_names.hpp>
 #include <pdd/triangle/switches.hpp>
 #include <pdd/triangle/triangulate.hpp>
@@ -62,7 +63,7 @@ void print_quality(const pdd::triangle_mesh& m) {
 
 /// Triangle's closing statistics block.
 void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
-  const auto nb = t.neighbors.empty() ? pdd::triangle::detail::neighbors(t.mesh) : t.neighbors;
+  const auto nb = t.neighbors.empty() ? pdd::triangle_neighbors(t.mesh) : t.neighbors;
   const auto e = pdd::triangle::detail::count_edges(nb);
   std::printf("\nStatistics:\n\n  Input vertices: %zu\n", in.vertices.size());
   std::printf("  Input segments: %zu\n", in.segments.size());

@@ -435,3 +435,88 @@ TEST(WriteMesh, EmptyMarkersAreZeros) {
   pdd::write_msh(dir / "m.msh", m);
   EXPECT_NE(pdd::test::read_text(dir / "m.msh").find("$Entities\n0 5 1 0\n"), std::string::npos);
 }
+
+// Region attributes (pdd-mesh -A): the .vtu's cell data "region_attribute" (Float64, after
+// "subdomain"), the .msh's physical tags (surfaces by attribute), the .ele's attribute column.
+TEST(RegionAttributes, VtuCellDataBlock) {
+  const auto m = pdd::test::small_mesh();
+  const std::vector<double> attr = {1.5, 1.5, 1.5, 1.5, -2, -2, -2, 0.25};
+  const auto p = pdd::test::temp_path("regions.vtu");
+  pdd::write_vtu(p, m, attr);
+  const std::string s = pdd::test::read_text(p);
+  const std::size_t name = s.find("Name=\"region_attribute\"");
+  ASSERT_NE(name, std::string::npos);
+  EXPECT_LT(s.find("Name=\"subdomain\""), name);
+  EXPECT_LT(name, s.find("</CellData>"));
+  EXPECT_EQ(s.rfind("<DataArray type=\"Float64\"", name), s.rfind("<DataArray", name));
+  // the blocks in order, each where its offset says; the region block is the third
+  const std::size_t base = s.find('_', s.find("<AppendedData")) + 1;
+  std::vector<std::uint64_t> offsets;
+  for (std::size_t q = s.find("offset=\""); q != std::string::npos && q < base;
+       q = s.find("offset=\"", q + 1))
+    offsets.push_back(std::stoull(s.substr(q + 8, 20)));
+  ASSERT_EQ(offsets.size(), 7u);
+  const std::uint64_t sizes[] = {8 * 4, 8 * 4, 8 * 8, 8 * 24, 24 * 4, 8 * 4, 8};
+  std::size_t pos = base;
+  for (std::size_t k = 0; k < 7; ++k) {
+    EXPECT_EQ(pos - base, offsets[k]) << "block " << k;
+    const auto bytes = read_raw<std::uint64_t>(s, pos);
+    EXPECT_EQ(bytes, sizes[k]) << "block " << k;
+    if (k == 2) {
+      for (std::size_t t = 0; t < 8; ++t)
+        EXPECT_EQ(read_raw<double>(s, pos), attr[t]) << t;
+    }
+    pos = offsets[k] + base + 8 + bytes;
+  }
+  EXPECT_EQ(s.substr(pos), "\n  </AppendedData>\n</VTKFile>\n");
+  // without attributes the file is the one write_vtu always wrote
+  pdd::write_vtu(p, m);
+  EXPECT_EQ(pdd::test::read_text(p).find("region_attribute"), std::string::npos);
+}
+
+TEST(RegionAttributes, MshSurfacesByAttributeAndEleColumn) {
+  const auto m = pdd::test::small_mesh();
+  const std::vector<double> attr = {5, 5, 5, -3, -3, -3, 5, 5};
+  const auto p = pdd::test::temp_path("regions.msh");
+  pdd::write_msh(p, m, attr);
+  const std::string s = pdd::test::read_text(p);
+  // 5 curves (segment markers), 2 surfaces: attribute -3 (tag 1) and 5 (tag 2)
+  EXPECT_NE(s.find("$Entities\n0 5 2 0\n"), std::string::npos) << s;
+  EXPECT_NE(s.find(" 0 1 -3 0\n"), std::string::npos) << s;
+  EXPECT_NE(s.find(" 0 1 5 0\n"), std::string::npos) << s;
+  EXPECT_NE(s.find("\n2 1 2 3\n4 "), std::string::npos) << s; // surface 1: triangles 4..6
+  EXPECT_NE(s.find("\n2 2 2 5\n1 "), std::string::npos) << s; // surface 2: 1..4, 7, 8
+  // the .ele's attribute column
+  const auto node = pdd::test::temp_path("regions.node");
+  pdd::write_mesh(node, m, attr);
+  std::istringstream ele(pdd::test::read_text(pdd::test::temp_path("regions.ele")));
+  std::size_t n = 0, corners = 0, columns = 0;
+  ele >> n >> corners >> columns;
+  ASSERT_EQ(n, 8u);
+  ASSERT_EQ(columns, 1u);
+  for (std::size_t t = 0; t < n; ++t) {
+    std::size_t id = 0, a = 0, b = 0, c = 0;
+    double value = 0;
+    ele >> id >> a >> b >> c >> value;
+    EXPECT_EQ(value, attr[t]) << t;
+  }
+}
+
+TEST(RegionAttributes, RefusedWhereTheyCannotBeWrittenAndNoFileIsLeft) {
+  const auto m = pdd::test::small_mesh();
+  const auto dir = pdd::test::fresh_dir("region_refusals");
+  const std::vector<double> half = {1, 2, 3, 4, 5, 6, 7, 8.5};
+  EXPECT_THROW(pdd::write_msh(dir / "a.msh", m, half), pdd::error); // 8.5: no physical tag
+  try {
+    pdd::write_msh(dir / "a.msh", m, half);
+  } catch (const pdd::error& e) {
+    EXPECT_NE(std::string(e.what()).find("8.5"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("triangle 7"), std::string::npos) << e.what();
+  }
+  const std::vector<double> three = {1, 2, 3};
+  EXPECT_THROW(pdd::write_vtu(dir / "b.vtu", m, three), pdd::error); // not one per triangle
+  EXPECT_THROW(pdd::write_mesh(dir / "c.ele", m, three), pdd::error);
+  const std::vector<double> ok(m.triangles.size(), 1.0);
+  EXPECT_THROW(pdd::write_mesh(dir / "d.svg", m, ok), pdd::error); // an .svg cannot show them
+  EXPECT_TRUE(pdd::test::dir_entries(dir).empty());
+}

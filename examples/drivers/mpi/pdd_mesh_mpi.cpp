@@ -95,6 +95,10 @@ void build_path(const mesh_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
   r.domain = pdd::read_poly(o.input);
   static_cast<void>(pdd::analyze(r.domain)); // validates, throws geometry_error
+  if (!o.quiet && r.rank == 0 && has_region_attributes(r.domain))
+    std::printf("pdd-mesh-mpi: note: the regional attributes of %s are not written with the "
+                "pieces (pdd-mesh -A writes them)\n",
+                o.input.c_str());
   r.options = generate_options_for(o, r.domain, r.sizing_kind);
   r.options.threads = o.subdomains > 0 ? r.threads : r.all_threads;
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);

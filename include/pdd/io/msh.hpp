@@ -9,6 +9,8 @@
 
 #include <filesystem>
 #include <ostream>
+#include <span>
+#include <vector>
 
 namespace pdd {
 
@@ -22,11 +24,18 @@ namespace pdd {
 /// surface 1), node tag = vertex index + 1. `$Elements`: triangles (type 2) grouped by surface,
 /// tag = triangle index + 1; boundary lines (type 1) grouped by curve, tag = #triangles +
 /// segment index + 1. Coordinates are written in shortest round-trip form, z = 0.
-/// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
+/// With `region_attributes` (one per triangle: pdd::region_attributes) the surfaces group the
+/// triangles by attribute instead, and each surface's physical tag is its attribute (so
+/// meshio's "gmsh:physical" is the region); the attributes must then be integers.
+/// \throws pdd::error naming the path for an inconsistent mesh, region attributes that are
+///   not one per triangle or not integers, or a failed write.
 /// Complexity: O(n log m) for m distinct markers. Thread-safety: reentrant.
-inline void write_msh(const std::filesystem::path& path, const triangle_mesh& mesh) {
+inline void write_msh(const std::filesystem::path& path, const triangle_mesh& mesh,
+                      std::span<const double> region_attributes = {}) {
   detail::check_mesh_for_writing(mesh, path);
-  write_file_atomically(path, [&](std::ostream& os) { detail::write_msh_stream(os, mesh); });
+  detail::check_region_attributes(mesh, region_attributes, path);
+  const std::vector<int> tags = detail::msh_region_tags(region_attributes, path);
+  write_file_atomically(path, [&](std::ostream& os) { detail::write_msh_stream(os, mesh, tags); });
 }
 
 } // namespace pdd

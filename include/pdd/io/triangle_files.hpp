@@ -4,10 +4,10 @@
 /// Formats: https://www.cs.cmu.edu/~quake/triangle.node.html, triangle.ele.html.
 #pragma once
 
+#include <pdd/core/triangle_mesh.hpp>
+#include <pdd/io/atomic_file.hpp>
 #include <pdd/io/detail/mesh.hpp>
 #include <pdd/io/detail/text.hpp>
-#include <pdd/io/atomic_file.hpp>
-#include <pdd/core/triangle_mesh.hpp>
 
 #include <array>
 #include <filesystem>
@@ -137,12 +137,16 @@ inline void write_neigh(const std::filesystem::path& path,
 
 /// Writes `<stem>.node`, `<stem>.ele` and `<stem>.poly` beside each other (stem = path without
 /// its extension), each atomically.
+/// The .ele's attribute column holds `region_attributes` when given (one per triangle:
+/// pdd::region_attributes), the triangle markers otherwise.
 /// \throws pdd::error as write_node / write_ele / write_mesh_poly.
-inline void write_triangle_files(const std::filesystem::path& path, const triangle_mesh& mesh) {
+inline void write_triangle_files(const std::filesystem::path& path, const triangle_mesh& mesh,
+                                 std::span<const double> region_attributes = {}) {
+  detail::check_region_attributes(mesh, region_attributes, path); // before any file
   std::filesystem::path stem = path;
   stem.replace_extension();
   write_node(std::filesystem::path(stem).concat(".node"), mesh);
-  write_ele(std::filesystem::path(stem).concat(".ele"), mesh);
+  write_ele(std::filesystem::path(stem).concat(".ele"), mesh, {}, region_attributes);
   write_mesh_poly(std::filesystem::path(stem).concat(".poly"), mesh);
 }
 

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <limits>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -23,18 +24,23 @@ namespace pdd {
 /// Writes the mesh as a VTK XML UnstructuredGrid (.vtu), atomically, in binary appended raw
 /// encoding (header_type UInt64, native byte order declared): 3D points (z = 0), triangle
 /// cells (VTK type 5), point data "vertex_marker" (Int32) and cell data "subdomain" (Int32,
-/// the triangle markers). Connectivity and offsets are Int32 when they fit, Int64 otherwise.
-/// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
+/// the triangle markers) and, when `region_attributes` is not empty, "region_attribute"
+/// (Float64, one per triangle: pdd::region_attributes). Connectivity and offsets are Int32
+/// when they fit, Int64 otherwise.
+/// \throws pdd::error naming the path for an inconsistent mesh, region attributes that are
+///   not one per triangle, or a failed write.
 /// Complexity: linear; memory O(1) beyond the mesh. Thread-safety: reentrant.
-inline void write_vtu(const std::filesystem::path& path, const triangle_mesh& mesh) {
+inline void write_vtu(const std::filesystem::path& path, const triangle_mesh& mesh,
+                      std::span<const double> region_attributes = {}) {
   detail::check_mesh_for_writing(mesh, path);
+  detail::check_region_attributes(mesh, region_attributes, path);
   constexpr std::size_t i32max = static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max());
   const bool small = mesh.vertices.size() <= i32max && mesh.triangles.size() <= i32max / 3;
   write_file_atomically(path, [&](std::ostream& os) {
     if (small)
-      detail::write_vtu_stream<std::int32_t>(os, mesh, "Int32");
+      detail::write_vtu_stream<std::int32_t>(os, mesh, "Int32", region_attributes);
     else
-      detail::write_vtu_stream<std::int64_t>(os, mesh, "Int64");
+      detail::write_vtu_stream<std::int64_t>(os, mesh, "Int64", region_attributes);
   });
 }
 

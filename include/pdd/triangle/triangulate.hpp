@@ -9,6 +9,7 @@
 #include <pdd/generate.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/validate.hpp>
+#include <pdd/mesh/region_attributes.hpp>
 #include <pdd/triangle/detail/components.hpp>
 #include <pdd/triangle/detail/face_regions.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
@@ -70,7 +71,7 @@ inline triangulation triangulate(pslg domain, const switches& sw,
   }
   detail::input_vertices_first(out.mesh, domain);
   if (sw.jettison) out.jettisoned_vertices = detail::jettison_unused_vertices(out.mesh);
-  if (sw.neighbors) out.neighbors = detail::neighbors(out.mesh);
+  if (sw.neighbors) out.neighbors = triangle_neighbors(out.mesh);
   return out;
 }
 

@@ -3,12 +3,13 @@
 /// runs before it creates a file, and marker look-ups that tolerate empty marker arrays.
 #pragma once
 
-#include <pdd/errors.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
 
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <span>
 #include <string>
 
 namespace pdd::detail {
@@ -34,6 +35,15 @@ inline void check_mesh_for_writing(const triangle_mesh& m, const std::filesystem
   for (std::size_t s = 0; s < m.segments.size(); ++s)
     if (m.segments[s].a >= n || m.segments[s].b >= n)
       throw error(where + "segment " + std::to_string(s) + " refers to a missing vertex");
+}
+
+/// Checks that region attributes (empty: none) are one per triangle.
+/// \throws pdd::error naming the path otherwise.
+inline void check_region_attributes(const triangle_mesh& m, std::span<const double> attributes,
+                                    const std::filesystem::path& path) {
+  if (!attributes.empty() && attributes.size() != m.triangles.size())
+    throw error("cannot write '" + path.string() + "': " + std::to_string(attributes.size()) +
+                " region attributes for " + std::to_string(m.triangles.size()) + " triangles");
 }
 
 /// Marker of vertex i (0 when the mesh has no vertex markers).

@@ -7,11 +7,17 @@
 #include <pdd/io/detail/mesh.hpp>
 #include <pdd/io/detail/text.hpp>
 
+#include <pdd/errors.hpp>
+
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <ostream>
+#include <span>
+#include <string>
 #include <vector>
 
 namespace pdd::detail {
@@ -116,10 +122,34 @@ inline void write_msh_elements(text_sink& out, const triangle_mesh& mesh,
   out.put("$EndElements\n");
 }
 
-/// The MSH 4.1 ASCII text of the mesh (see pdd::write_msh for the layout).
-inline void write_msh_stream(std::ostream& os, const triangle_mesh& mesh) {
+/// The physical tags of the triangles for region attributes (pdd::region_attributes): each
+/// attribute itself, which must be an integer that fits an int.
+/// \throws pdd::error naming the path, the triangle and the attribute otherwise.
+inline std::vector<int> msh_region_tags(std::span<const double> attributes,
+                                        const std::filesystem::path& path) {
+  std::vector<int> tags(attributes.size());
+  for (std::size_t t = 0; t < attributes.size(); ++t) {
+    const double a = attributes[t];
+    if (!(std::trunc(a) == a && a >= std::numeric_limits<int>::min() &&
+          a <= std::numeric_limits<int>::max()))
+      throw error("cannot write '" + path.string() + "': the region attribute " +
+                  std::to_string(a) + " of triangle " + std::to_string(t) +
+                  " is not an integer, and a .msh physical tag must be one (write .vtu or "
+                  ".ele for real-valued attributes)");
+    tags[t] = static_cast<int>(a);
+  }
+  return tags;
+}
+
+/// The MSH 4.1 ASCII text of the mesh (see pdd::write_msh for the layout); `surface_tags`:
+/// the physical tag of every triangle (empty: the triangle markers).
+inline void write_msh_stream(std::ostream& os, const triangle_mesh& mesh,
+                             std::span<const int> surface_tags = {}) {
   const auto surfaces = group_by_marker(
-      mesh.triangles.size(), [&](std::size_t t) { return triangle_marker(mesh, t); },
+      mesh.triangles.size(),
+      [&](std::size_t t) {
+        return surface_tags.empty() ? triangle_marker(mesh, t) : surface_tags[t];
+      },
       [&](msh_entity& e, std::size_t t) {
         for (const index_t v : mesh.triangles[t])
           e.grow(mesh.vertices[v]);

@@ -11,6 +11,7 @@
 #include <bit>
 #include <cstdint>
 #include <ostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -55,9 +56,38 @@ inline void append_vtk_data_array(std::string& h, const char* type, const char* 
   h += "\"/>\n";
 }
 
+/// The byte offsets of a .vtu's appended arrays, in file order: the point data, the cell
+/// data (the region attributes only when the file has them), the points and the cells.
+struct vtu_offsets {
+  std::uint64_t vertex_marker = 0, subdomain = 0, region_attribute = 0, points = 0,
+                connectivity = 0, offsets = 0, types = 0;
+  bool has_region_attribute = false;
+};
+
+/// The offsets for n points and t triangles with connectivity and offsets of index_bytes each;
+/// every block has an 8-byte size header.
+inline vtu_offsets vtu_layout(std::size_t n, std::size_t t, std::size_t index_bytes,
+                              bool region_attribute) {
+  vtu_offsets o;
+  o.has_region_attribute = region_attribute;
+  std::uint64_t acc = 0;
+  const auto place = [&acc](std::uint64_t& at, std::size_t bytes) {
+    at = acc;
+    acc += 8 + bytes;
+  };
+  place(o.vertex_marker, n * 4);
+  place(o.subdomain, t * 4);
+  if (region_attribute) place(o.region_attribute, t * 8);
+  place(o.points, n * 3 * 8);
+  place(o.connectivity, t * 3 * index_bytes);
+  place(o.offsets, t * index_bytes);
+  place(o.types, t);
+  return o;
+}
+
 /// The XML part of a .vtu up to the appended data's '_' marker: n points, t triangles, the
-/// six arrays at the offsets off (in file order) with connectivity and offsets of index_type.
-inline std::string vtu_header(std::size_t n, std::size_t t, const std::uint64_t (&off)[6],
+/// arrays at the offsets off with connectivity and offsets of index_type.
+inline std::string vtu_header(std::size_t n, std::size_t t, const vtu_offsets& off,
                               const char* index_type) {
   std::string h;
   h += "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"";
@@ -68,38 +98,36 @@ inline std::string vtu_header(std::size_t n, std::size_t t, const std::uint64_t 
   append_integer(h, t);
   h += "\">\n";
   h += "      <PointData Scalars=\"vertex_marker\">\n";
-  append_vtk_data_array(h, "Int32", "vertex_marker", 1, off[0]);
+  append_vtk_data_array(h, "Int32", "vertex_marker", 1, off.vertex_marker);
   h += "      </PointData>\n      <CellData Scalars=\"subdomain\">\n";
-  append_vtk_data_array(h, "Int32", "subdomain", 1, off[1]);
+  append_vtk_data_array(h, "Int32", "subdomain", 1, off.subdomain);
+  if (off.has_region_attribute)
+    append_vtk_data_array(h, "Float64", "region_attribute", 1, off.region_attribute);
   h += "      </CellData>\n      <Points>\n";
-  append_vtk_data_array(h, "Float64", "Points", 3, off[2]);
+  append_vtk_data_array(h, "Float64", "Points", 3, off.points);
   h += "      </Points>\n      <Cells>\n";
-  append_vtk_data_array(h, index_type, "connectivity", 1, off[3]);
-  append_vtk_data_array(h, index_type, "offsets", 1, off[4]);
-  append_vtk_data_array(h, "UInt8", "types", 1, off[5]);
+  append_vtk_data_array(h, index_type, "connectivity", 1, off.connectivity);
+  append_vtk_data_array(h, index_type, "offsets", 1, off.offsets);
+  append_vtk_data_array(h, "UInt8", "types", 1, off.types);
   h += "      </Cells>\n    </Piece>\n  </UnstructuredGrid>\n"
        "  <AppendedData encoding=\"raw\">\n   _";
   return h;
 }
 
-/// The .vtu file of the mesh (see pdd::write_vtu), connectivity and offsets of type Index.
+/// The .vtu file of the mesh (see pdd::write_vtu), connectivity and offsets of type Index,
+/// the cell data "region_attribute" when `attributes` is not empty (one per triangle).
 template <class Index>
-void write_vtu_stream(std::ostream& os, const triangle_mesh& mesh, const char* index_type) {
+void write_vtu_stream(std::ostream& os, const triangle_mesh& mesh, const char* index_type,
+                      std::span<const double> attributes) {
   const std::size_t n = mesh.vertices.size();
   const std::size_t t = mesh.triangles.size();
-  // Byte sizes of the appended blocks, in file order; each block has an 8-byte size header.
-  const std::size_t sizes[] = {n * 4, t * 4, n * 3 * 8, t * 3 * sizeof(Index), t * sizeof(Index),
-                               t};
-  std::uint64_t off[6];
-  std::uint64_t acc = 0;
-  for (int k = 0; k < 6; ++k) {
-    off[k] = acc;
-    acc += 8 + sizes[k];
-  }
+  const vtu_offsets off = vtu_layout(n, t, sizeof(Index), !attributes.empty());
   const std::string h = vtu_header(n, t, off, index_type);
   os.write(h.data(), static_cast<std::streamsize>(h.size()));
   write_vtk_block<std::int32_t>(os, n, [&](std::size_t i) { return vertex_marker(mesh, i); });
   write_vtk_block<std::int32_t>(os, t, [&](std::size_t i) { return triangle_marker(mesh, i); });
+  if (!attributes.empty())
+    write_vtk_block<double>(os, t, [&](std::size_t i) { return attributes[i]; });
   write_vtk_block<double>(os, n * 3, [&](std::size_t i) {
     const point& p = mesh.vertices[i / 3];
     return i % 3 == 0 ? p.x : i % 3 == 1 ? p.y : 0.0;

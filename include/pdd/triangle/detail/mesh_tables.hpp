@@ -4,9 +4,9 @@
 /// (switch n); the edge counts of Triangle's statistics.
 #pragma once
 
-#include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
 
 #include <array>
 #include <bit>
@@ -87,27 +87,6 @@ inline std::size_t jettison_unused_vertices(triangle_mesh& m) {
   const std::size_t dropped = m.vertices.size() - next;
   if (dropped != 0) renumber_vertices(m, new_id, next);
   return dropped;
-}
-
-/// The triangle across from vertex i of each triangle (Triangle's .neigh convention), -1 on
-/// the boundary. Complexity O(triangles) expected.
-inline std::vector<std::array<long long, 3>> neighbors(const triangle_mesh& m) {
-  std::unordered_map<std::uint64_t, std::pair<index_t, int>> open;
-  open.reserve(m.triangles.size() * 2);
-  std::vector<std::array<long long, 3>> out(m.triangles.size(), {-1, -1, -1});
-  for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    for (int i = 0; i < 3; ++i) {
-      index_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
-      if (a > b) std::swap(a, b);
-      const std::uint64_t k = (std::uint64_t{a} << 32) | b;
-      const auto [it, inserted] = open.try_emplace(k, static_cast<index_t>(t), i);
-      if (inserted) continue;
-      out[t][static_cast<std::size_t>(i)] = it->second.first;
-      out[it->second.first][static_cast<std::size_t>(it->second.second)] =
-          static_cast<long long>(t);
-      open.erase(it);
-    }
-  return out;
 }
 
 /// Triangle's edge counts: all edges and the boundary edges (edges of one triangle).

@@ -8,6 +8,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/loops.hpp>
+#include <pdd/mesh/region_attributes.hpp>
 #include <pdd/triangle/detail/components.hpp>
 #include <pdd/triangle/switches.hpp>
 #include <pdd/triangle/triangulation.hpp>
@@ -53,7 +54,7 @@ inline std::vector<double> component_attributes(const pslg& g, const loop_struct
 inline std::vector<std::size_t> triangle_components(const pslg& g, const loop_structure& ls,
                                                     const std::vector<domain_component>& comps,
                                                     const triangle_mesh& m) {
-  const auto nb = neighbors(m);
+  const auto nb = triangle_neighbors(m);
   std::vector<std::size_t> out(m.triangles.size(), no_component - 1);
   std::vector<std::size_t> stack;
   for (std::size_t seed = 0; seed < m.triangles.size(); ++seed) {
