@@ -1,13 +1,18 @@
 // Writes the generated part of the fuzzer's seed corpus: small domains made by pdd's own
 // generators (model domains, the geometry tests' random domains) and a few hand-shaped ones that
 // reach the interesting paths (small input angles that get shielded, holes, thin parts, a
-// regions section). The bundled examples/data files are the other seeds.
+// regions section), and small general domains (issue 13, meshed whole by Triangle's rule: an
+// internal constraint, a dangling segment and isolated vertices, an internal boundary, loops
+// touching at pinch vertices, a T-junction grid, a fan of dangling segments at 15 deg, random
+// arrangements; tests/common/general_domains.hpp). The bundled examples/data files are the other
+// seeds.
 //
 //   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/io/poly.hpp>
 
+#include "general_domains.hpp"
 #include "random_domains.hpp"
 
 #include <cmath>
@@ -68,6 +73,53 @@ pdd::pslg comb(int teeth) {
   return polygon(p);
 }
 
+pdd::pslg square4() {
+  return polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+}
+
+/// A 4 x 4 square with a dangling segment and two isolated vertices.
+pdd::pslg dangling_and_isolated() {
+  pdd::pslg g = square4();
+  g.add_segment(g.add_vertex({1, 1}), g.add_vertex({2.5, 3}));
+  g.add_vertex({1.3, 2.7});
+  g.add_vertex({3.1, 0.9});
+  return g;
+}
+
+/// A 4 x 4 square with an inner square loop and no hole point (both sides are the domain).
+pdd::pslg internal_boundary() {
+  pdd::pslg g = square4();
+  g.add_loop(std::vector<pdd::point>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}, 2);
+  return g;
+}
+
+/// A 4 x 4 square with four dangling segments of length 1.5 from its centre, 15 deg apart (a
+/// cluster: cluster-exempt triangles).
+pdd::pslg dangling_fan() {
+  pdd::pslg g = square4();
+  const pdd::index_t c = g.add_vertex({2, 2});
+  for (int i = 0; i < 4; ++i) {
+    const double a = (20.0 + 15.0 * i) * std::numbers::pi / 180.0;
+    g.add_segment(c, g.add_vertex({2 + 1.5 * std::cos(a), 2 + 1.5 * std::sin(a)}));
+  }
+  return g;
+}
+
+std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
+  pdd::pslg diagonal = square4();
+  diagonal.add_segment(0, 2);
+  return {{"general-internal-diagonal", diagonal},
+          {"general-dangling-isolated", dangling_and_isolated()},
+          {"general-internal-boundary", internal_boundary()},
+          {"general-dangling-fan", dangling_fan()},
+          {"general-layered", pdd::test::layered_domain(0.5)},
+          {"general-pinched", pdd::test::pinched_rings()},
+          {"general-t-junctions", pdd::test::t_junction_grid()},
+          {"general-combined", pdd::test::combined_domain(0.5)},
+          {"general-random-1", pdd::test::random_arrangement(1)},
+          {"general-random-2", pdd::test::random_arrangement(2)}};
+}
+
 std::vector<std::pair<std::string, pdd::pslg>> seeds() {
   std::vector<std::pair<std::string, pdd::pslg>> s{
       {"key", pdd::key_domain()},
@@ -85,6 +137,8 @@ std::vector<std::pair<std::string, pdd::pslg>> seeds() {
   };
   for (const std::uint64_t seed : {1u, 2u, 3u, 4u})
     s.emplace_back("random-" + std::to_string(seed), pdd::test::random_domain(seed, 1, 0.5).g);
+  for (auto& general : general_seeds())
+    s.push_back(std::move(general));
   return s;
 }
 
