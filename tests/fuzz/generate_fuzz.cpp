@@ -105,15 +105,15 @@ outcome_counts counts;
 
 void print_counts() {
   const outcome_counts& c = counts;
-  std::fprintf(stderr,
-               "pdd fuzz outcomes: %zu refused as input (or > 256 vertices); closed loops: %zu "
-               "skipped (size), %zu "
-               "verified N = 1, %zu refused N = 1, %zu verified N = 2; general: %zu skipped "
-               "(size), %zu verified N = 1, %zu refused N = 1 (%zu for a sub-degree angle), %zu "
-               "N = 2 refused as they must be\n",
-               c.refused_input, c.skipped[0], c.verified[0], c.refused[0], c.n2_verified,
-               c.skipped[1], c.verified[1], c.refused[1] + c.angle_refusals, c.angle_refusals,
-               c.n2_refused_general);
+  std::fprintf(
+      stderr,
+      "pdd fuzz outcomes: %zu refused as input (or > 256 vertices); "
+      "closed loops: %zu skipped (size), %zu verified N = 1, %zu refused N = 1, "
+      "%zu verified N = 2; "
+      "general: %zu skipped (size), %zu verified N = 1, "
+      "%zu refused N = 1 (%zu for a sub-degree angle), %zu N = 2 refused as they must be\n",
+      c.refused_input, c.skipped[0], c.verified[0], c.refused[0], c.n2_verified, c.skipped[1],
+      c.verified[1], c.refused[1] + c.angle_refusals, c.angle_refusals, c.n2_refused_general);
 }
 
 /// Reports a finding and aborts (libFuzzer then saves the input as crash-<hash>).
