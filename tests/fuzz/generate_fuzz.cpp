@@ -10,9 +10,11 @@
 // - general domains (internal constraint segments, dangling segments, isolated vertices, loops
 //   that touch at pinch vertices, loops nested without a hole point; issue 13): meshed whole by
 //   Triangle's rule. N = 1 is verified against the domain read by Triangle's rule
-//   (pdd::domain_rule::triangle): every segment, internal and dangling ones included, a union of
-//   mesh edges, every isolated vertex in the domain a mesh vertex, the area of the faces; exempt
-//   from the angle bound are the cluster-exempt triangles at angles < 60 deg between segments
+//   (pdd::domain_rule::triangle): every segment with a domain face on a side, internal and
+//   dangling ones included, a union of mesh edges (one with no domain face on either side, e.g.
+//   dangling outside the domain, is left out of the mesh as Triangle 1.6 does), every isolated
+//   vertex in the domain a mesh vertex, the area of the faces; exempt from the angle bound are
+//   the cluster-exempt triangles at angles < 60 deg between segments
 //   (pdd::find_cluster_exempt_triangles) only. N = 2 must be refused with a
 //   pdd::decomposition_error (the decoupled pipeline needs closed loops); a mesh or any other
 //   exception there is a finding.
@@ -42,8 +44,9 @@
 // with P / lfs_min > max_perimeter_over_lfs are skipped. A needle of width 1 and length 4e9 (a
 // valid input that needs billions of triangles) has P / lfs_min = 8e9. The bound does not see
 // the thin parts next to a small input angle (their segments meet, so they do not lower
-// lfs_min; the shields cut them off): a triangle of base 1, height 1317 and a 0.04 deg apex
-// (P / lfs_min = 2635) took 24 s under ASan on a loaded machine, hence -timeout=300.
+// lfs_min; the shields, or on general domains the kernel's clusters, cut them off): a triangle of
+// base 1, height 1317 and a 0.04 deg apex (P / lfs_min = 2635) took 24 s under ASan on a loaded
+// machine, hence -timeout=300.
 //
 // General domains need both numbers changed. pdd::lfs_min is defined on closed loops: it
 // throws pdd::geometry_error for a vertex that is not on exactly two segments (find_loops), and
