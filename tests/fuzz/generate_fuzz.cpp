@@ -2,12 +2,32 @@
 // (pdd::parse_poly from memory), validated, meshed by pdd::generate with N = 1 and N = 2, and
 // every mesh is checked by pdd::verify: exact Delaunay, orientation, conformity to the input
 // segments, the domain area covered, the area bound, and the angle bound on every triangle that
-// is not a shielded corner (dissertation 8.1).
+// is not exempt.
+//
+// Two kinds of domain (pdd::has_closed_loops):
+// - closed loops: decoupled for N = 2; exempt from the angle bound are the shielded corners
+//   (dissertation 8.1, pdd::find_shielded_triangles) only.
+// - general domains (internal constraint segments, dangling segments, isolated vertices, loops
+//   that touch at pinch vertices, loops nested without a hole point; issue 13): meshed whole by
+//   Triangle's rule. N = 1 is verified against the domain read by Triangle's rule
+//   (pdd::domain_rule::triangle): every segment with a domain face on a side, internal and
+//   dangling ones included, a union of mesh edges (one with no domain face on either side, e.g.
+//   dangling outside the domain, is left out of the mesh as Triangle 1.6 does), every isolated
+//   vertex in the domain a mesh vertex, the area of the faces; exempt from the angle bound are
+//   the cluster-exempt triangles at angles < 60 deg between segments
+//   (pdd::find_cluster_exempt_triangles) only. N = 2 must be refused with a
+//   pdd::decomposition_error (the decoupled pipeline needs closed loops); a mesh or any other
+//   exception there is a finding.
 //
 // Refusals of bad input are passes: pdd::input_error (parser), pdd::geometry_error (validate,
 // shields), pdd::decomposition_error (MADD cannot split the domain as asked), pdd::limit_error,
 // and pdd::error from the parser (a .poly with 0 vertices names a .node file that cannot be
-// read). Everything else aborts, and libFuzzer keeps the input: any other exception
+// read). One more, on general domains only: the CGAL kernel's documented pdd::meshing_error for
+// two segments at a sub-degree angle ("... cannot be split: its rounded split point falls beyond
+// a neighbouring segment", tests/kernels/triangle_rule_test.cpp UnresolvableAngleIsAMeshingError)
+// passes when that is its message and two of the input's segments do meet at a shared vertex at
+// less than 1 deg; the same error on a domain of closed loops, or without such an angle, is a
+// finding. Everything else aborts, and libFuzzer keeps the input: any other exception
 // (internal_error, meshing_error, decoupling_error, std::exception), a crash, a sanitizer report,
 // or a mesh that fails verification.
 //
@@ -24,32 +44,80 @@
 // with P / lfs_min > max_perimeter_over_lfs are skipped. A needle of width 1 and length 4e9 (a
 // valid input that needs billions of triangles) has P / lfs_min = 8e9. The bound does not see
 // the thin parts next to a small input angle (their segments meet, so they do not lower
-// lfs_min; the shields cut them off): a triangle of base 1, height 1317 and a 0.04 deg apex
-// (P / lfs_min = 2635) took 24 s under ASan on a loaded machine, hence -timeout=300.
+// lfs_min; the shields, or on general domains the kernel's clusters, cut them off): a triangle of
+// base 1, height 1317 and a 0.04 deg apex (P / lfs_min = 2635) took 24 s under ASan on a loaded
+// machine, hence -timeout=300.
+//
+// General domains need both numbers changed. pdd::lfs_min is defined on closed loops: it
+// throws pdd::geometry_error for a vertex that is not on exactly two segments (find_loops), and
+// on loops nested without a hole point it measures the odd-nesting domain, not the faces that
+// are meshed. So a general domain's lfs_min is bounded from below by general_lfs_lower_bound:
+// the smallest distance between two vertices or a vertex and a segment not incident to it over
+// the whole PSLG (isolated vertices and dangling segments included, visibility in the domain
+// ignored, so it is <= Definition 7's lfs_min). And the domain lies on both sides of an internal
+// or dangling segment and all round an isolated vertex: with F the segments and vertices, the
+// area within t of F is <= 2 P t + pi V t^2 (V vertices, their disks cover the segments' ends),
+// so the integral is <= 4 (2 P) / lfs_min + 2 pi V ln(P / lfs_min). The skip rule takes
+// 2 P / lfs_min for general domains; the vertex term is bounded by max_vertices (at most
+// 2 pi 256 ln(1e4) ~ 1.5e4, below the segment term's 8e4 at the limit).
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/io/poly.hpp>
+#include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <limits>
+#include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace {
 
 constexpr std::size_t max_input_bytes = 8192;
 constexpr std::size_t max_vertices = 256;
 constexpr double max_perimeter_over_lfs = 20000.0;
+/// Below this angle between two segments at a shared vertex the CGAL kernel may refuse a
+/// general domain with its documented meshing_error (see the file comment).
+constexpr double unresolvable_angle_deg = 1.0;
+
+/// What happened to the inputs, by kind of domain (0: closed loops, 1: general), printed at
+/// exit so that a run shows how many inputs were meshed and verified rather than skipped.
+struct outcome_counts {
+  std::size_t refused_input = 0;      // parser or validate() refused the bytes, > 256 vertices
+  std::size_t skipped[2] = {0, 0};    // beyond the size limits
+  std::size_t verified[2] = {0, 0};   // N = 1 meshed and verified
+  std::size_t refused[2] = {0, 0};    // N = 1 refused (geometry, decomposition, limit error)
+  std::size_t angle_refusals = 0;     // general: the kernel's documented sub-degree angle refusal
+  std::size_t n2_verified = 0;        // closed loops: N = 2 meshed and verified
+  std::size_t n2_refused_general = 0; // general: N = 2 refused with a decomposition_error
+};
+outcome_counts counts;
+
+void print_counts() {
+  const outcome_counts& c = counts;
+  std::fprintf(
+      stderr,
+      "pdd fuzz outcomes: %zu refused as input (or > 256 vertices); "
+      "closed loops: %zu skipped (size), %zu verified N = 1, %zu refused N = 1, "
+      "%zu verified N = 2; "
+      "general: %zu skipped (size), %zu verified N = 1, "
+      "%zu refused N = 1 (%zu for a sub-degree angle), %zu N = 2 refused as they must be\n",
+      c.refused_input, c.skipped[0], c.verified[0], c.refused[0], c.n2_verified, c.skipped[1],
+      c.verified[1], c.refused[1] + c.angle_refusals, c.angle_refusals, c.n2_refused_general);
+}
 
 /// Reports a finding and aborts (libFuzzer then saves the input as crash-<hash>).
 [[noreturn]] void finding(const std::string& what) {
@@ -57,17 +125,29 @@ constexpr double max_perimeter_over_lfs = 20000.0;
   std::abort();
 }
 
+/// A domain to mesh: the PSLG as parsed (as pdd-mesh hands it to pdd::generate) and whether it
+/// is a general one (not of closed loops: meshed whole by Triangle's rule).
+struct fuzz_domain {
+  pdd::pslg input;
+  bool general = false;
+
+  /// The domain as the pipeline reads it, for pdd::domain_area and pdd::verify.
+  pdd::pslg as_meshed() const {
+    pdd::pslg g = input;
+    if (general) g.rule = pdd::domain_rule::triangle;
+    return g;
+  }
+};
+
 /// The parsed and validated domain, or nothing when the parser or validate() refuses it.
-std::optional<pdd::pslg> read_domain(const std::uint8_t* data, std::size_t size) {
+std::optional<fuzz_domain> read_domain(const std::uint8_t* data, std::size_t size) {
   std::istringstream in(std::string(reinterpret_cast<const char*>(data), size));
   try {
     // A vertex count of 0 refers to a .node sibling: looked up under /dev/null, never found.
-    pdd::pslg g = pdd::parse_poly(in, "fuzz.poly", "/dev/null");
-    if (g.vertices.size() > max_vertices) return std::nullopt;
-    // domains not made of closed loops are meshed whole (issue 13); this target fuzzes the
-    // decoupled pipeline
-    if (!pdd::has_closed_loops(g)) return std::nullopt;
-    return g;
+    fuzz_domain d{pdd::parse_poly(in, "fuzz.poly", "/dev/null")};
+    if (d.input.vertices.size() > max_vertices) return std::nullopt;
+    d.general = !pdd::has_closed_loops(d.input); // validates
+    return d;
   } catch (const pdd::input_error&) {
   } catch (const pdd::geometry_error&) {
   } catch (const pdd::internal_error&) {
@@ -85,6 +165,50 @@ double perimeter(const pdd::pslg& g) {
   return p;
 }
 
+/// Distance of q from the closed segment [a, b] (rounded; only a size estimate).
+double segment_distance(const pdd::point& q, const pdd::point& a, const pdd::point& b) {
+  const double ux = b.x - a.x, uy = b.y - a.y;
+  const double t =
+      std::clamp(((q.x - a.x) * ux + (q.y - a.y) * uy) / (ux * ux + uy * uy), 0.0, 1.0);
+  return std::hypot(q.x - (a.x + t * ux), q.y - (a.y + t * uy));
+}
+
+/// A lower bound on lfs_min of a general domain (see the file comment): the smallest distance
+/// between two vertices, or a vertex and a segment not incident to it, over the whole PSLG.
+/// Complexity O(V^2 + V S): at most 256 vertices and the segments of 8 KiB of text.
+double general_lfs_lower_bound(const pdd::pslg& g) {
+  double best = std::numeric_limits<double>::infinity();
+  for (pdd::index_t v = 0; v < g.vertices.size(); ++v) {
+    const pdd::point& q = g.vertices[v];
+    for (pdd::index_t w = v + 1; w < g.vertices.size(); ++w)
+      best = std::min(best, std::hypot(g.vertices[w].x - q.x, g.vertices[w].y - q.y));
+    for (const pdd::segment& s : g.segments)
+      if (s.a != v && s.b != v)
+        best = std::min(best, segment_distance(q, g.vertices[s.a], g.vertices[s.b]));
+  }
+  return best;
+}
+
+/// The smallest angle in degrees between two segments of g at a shared vertex (180 if none).
+double smallest_segment_angle_deg(const pdd::pslg& g) {
+  std::vector<std::vector<pdd::index_t>> around(g.vertices.size());
+  for (const pdd::segment& s : g.segments) {
+    around[s.a].push_back(s.b);
+    around[s.b].push_back(s.a);
+  }
+  double best = 180.0;
+  for (pdd::index_t v = 0; v < g.vertices.size(); ++v)
+    for (std::size_t i = 0; i < around[v].size(); ++i)
+      for (std::size_t j = i + 1; j < around[v].size(); ++j) {
+        const pdd::point &o = g.vertices[v], &p = g.vertices[around[v][i]],
+                         &q = g.vertices[around[v][j]];
+        const double ux = p.x - o.x, uy = p.y - o.y, wx = q.x - o.x, wy = q.y - o.y;
+        const double a = std::abs(std::atan2(ux * wy - uy * wx, ux * wx + uy * wy));
+        best = std::min(best, a * 180.0 / std::numbers::pi);
+      }
+  return best;
+}
+
 /// The divisor d in [8, 4096] of the area bound for these bytes (FNV-1a hash, log-uniform).
 double area_divisor(const std::uint8_t* data, std::size_t size) {
   std::uint64_t h = 14695981039346656037ull;
@@ -93,26 +217,31 @@ double area_divisor(const std::uint8_t* data, std::size_t size) {
   return std::exp2(3.0 + 9.0 * static_cast<double>(h >> 11) * 0x1.0p-53);
 }
 
-/// The mesh criteria for g (A = area / divisor, 20.7 deg), or nothing when the quality mesh of
-/// g may be too large for a fuzzing input (see the limits above).
-std::optional<pdd::mesh_criteria> small_mesh_criteria(const pdd::pslg& g, double divisor) {
+/// The mesh criteria for d (A = area / divisor, 20.7 deg), or nothing when the quality mesh of
+/// d may be too large for a fuzzing input (see the limits in the file comment).
+std::optional<pdd::mesh_criteria> small_mesh_criteria(const fuzz_domain& d, double divisor) {
+  const pdd::pslg g = d.as_meshed();
   pdd::mesh_criteria c;
   c.max_area = pdd::domain_area(g) / divisor;
   if (!std::isnormal(c.max_area)) return std::nullopt;
-  const double ratio = perimeter(g) / pdd::lfs_min(g);
+  const double ratio =
+      d.general ? 2.0 * perimeter(g) / general_lfs_lower_bound(g) : perimeter(g) / pdd::lfs_min(g);
   if (!(ratio <= max_perimeter_over_lfs)) return std::nullopt;
   return c;
 }
 
-/// Verifies a mesh of g (shielded corners exempt from the angle bound only).
-void check_mesh(const pdd::triangle_mesh& m, const pdd::pslg& g, const pdd::mesh_criteria& c,
+/// Verifies a mesh of d (shielded corners, or on a general domain cluster-exempt triangles,
+/// exempt from the angle bound only).
+void check_mesh(const pdd::triangle_mesh& m, const fuzz_domain& d, const pdd::mesh_criteria& c,
                 std::size_t n) {
+  const pdd::pslg g = d.as_meshed();
   pdd::verify_options vo{.criteria = c};
-  vo.quality_exempt = pdd::find_shielded_triangles(m, g);
+  vo.quality_exempt = d.general ? pdd::find_cluster_exempt_triangles(m, g, c.min_angle_deg)
+                                : pdd::find_shielded_triangles(m, g);
   const pdd::verification_report rep = pdd::verify(m, g, vo);
   if (rep.ok()) return;
-  std::string what = "N = " + std::to_string(n) + ", max_area " + std::to_string(c.max_area) +
-                     ": the mesh fails verification:";
+  std::string what = "N = " + std::to_string(n) + (d.general ? " (general domain)" : "") +
+                     ", max_area " + std::to_string(c.max_area) + ": the mesh fails verification:";
   for (const std::string& line : rep.messages)
     what += "\n  " + line;
   if (!rep.area_ok)
@@ -121,38 +250,85 @@ void check_mesh(const pdd::triangle_mesh& m, const pdd::pslg& g, const pdd::mesh
   finding(what);
 }
 
-/// Meshes g with N subdomains; refusals of the input are passes, anything else a finding.
-void mesh_and_check(const pdd::pslg& g, const pdd::mesh_criteria& c, std::size_t n) {
+/// True for the CGAL kernel's documented refusal of a general domain with two segments at a
+/// sub-degree angle (see the file comment).
+bool unresolvable_angle_refusal(const pdd::meshing_error& e, const fuzz_domain& d) {
+  const std::string what = e.what();
+  return d.general &&
+         what.find("cannot be split: its rounded split point falls beyond a neighbouring "
+                   "segment") != std::string::npos &&
+         smallest_segment_angle_deg(d.input) < unresolvable_angle_deg;
+}
+
+/// Meshes d with N subdomains; refusals of the input are passes, anything else a finding.
+void mesh_and_check(const fuzz_domain& d, const pdd::mesh_criteria& c, std::size_t n) {
   pdd::generate_options o;
   o.criteria = c;
   o.subdomains = n;
   o.threads = static_cast<unsigned>(n); // N = 2 runs both subdomains at once
   std::optional<pdd::generate_result> r;
   try {
-    r = pdd::generate(g, o);
+    r = pdd::generate(d.input, o);
   } catch (const pdd::geometry_error&) {
-    return;
   } catch (const pdd::decomposition_error&) {
-    return;
   } catch (const pdd::limit_error&) {
+  } catch (const pdd::meshing_error& e) {
+    if (!unresolvable_angle_refusal(e, d)) finding("N = " + std::to_string(n) + ": " + e.what());
+    ++counts.angle_refusals;
     return;
   } catch (const std::exception& e) {
     finding("N = " + std::to_string(n) + ": " + e.what());
   }
-  check_mesh(r->mesh, g, c, n);
+  if (!r) {
+    if (n == 1) ++counts.refused[d.general];
+    return;
+  }
+  check_mesh(r->mesh, d, c, n);
+  ++(n == 1 ? counts.verified[d.general] : counts.n2_verified);
+}
+
+/// N = 2 on a general domain: must be refused with a decomposition_error.
+void expect_refused(const fuzz_domain& d, const pdd::mesh_criteria& c) {
+  pdd::generate_options o;
+  o.criteria = c;
+  o.subdomains = 2;
+  o.threads = 2;
+  try {
+    (void)pdd::generate(d.input, o);
+  } catch (const pdd::decomposition_error&) {
+    ++counts.n2_refused_general;
+    return;
+  } catch (const std::exception& e) {
+    finding(std::string("N = 2 on a general domain: not a decomposition_error: ") + e.what());
+  }
+  finding("N = 2 on a general domain: meshed instead of refused");
 }
 
 } // namespace
 
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  std::atexit(print_counts);
+  return 0;
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > max_input_bytes) return 0;
   try {
-    const std::optional<pdd::pslg> g = read_domain(data, size);
-    if (!g) return 0;
-    const std::optional<pdd::mesh_criteria> c = small_mesh_criteria(*g, area_divisor(data, size));
-    if (!c) return 0;
-    mesh_and_check(*g, *c, 1);
-    mesh_and_check(*g, *c, 2);
+    const std::optional<fuzz_domain> d = read_domain(data, size);
+    if (!d) {
+      ++counts.refused_input;
+      return 0;
+    }
+    const std::optional<pdd::mesh_criteria> c = small_mesh_criteria(*d, area_divisor(data, size));
+    if (!c) {
+      ++counts.skipped[d->general];
+      return 0;
+    }
+    mesh_and_check(*d, *c, 1);
+    if (d->general)
+      expect_refused(*d, *c);
+    else
+      mesh_and_check(*d, *c, 2);
   } catch (const std::exception& e) {
     finding(std::string("unexpected exception: ") + e.what());
   }

@@ -1,13 +1,18 @@
 // Writes the generated part of the fuzzer's seed corpus: small domains made by pdd's own
 // generators (model domains, the geometry tests' random domains) and a few hand-shaped ones that
 // reach the interesting paths (small input angles that get shielded, holes, thin parts, a
-// regions section). The bundled examples/data files are the other seeds.
+// regions section), and small general domains (issue 13, meshed whole by Triangle's rule: an
+// internal constraint, a dangling segment and isolated vertices, an internal boundary, loops
+// touching at pinch vertices, a T-junction grid, a fan of dangling segments at 15 deg, random
+// arrangements, tests/common/general_domains.hpp; one with a 0.2 deg angle the kernel refuses).
+// The bundled examples/data files are the other seeds.
 //
 //   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/io/poly.hpp>
 
+#include "general_domains.hpp"
 #include "random_domains.hpp"
 
 #include <cmath>
@@ -16,6 +21,7 @@
 #include <exception>
 #include <filesystem>
 #include <numbers>
+#include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -68,6 +74,108 @@ pdd::pslg comb(int teeth) {
   return polygon(p);
 }
 
+pdd::pslg square4() {
+  return polygon({{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+}
+
+/// A 4 x 4 square with a dangling segment and two isolated vertices.
+pdd::pslg dangling_and_isolated() {
+  pdd::pslg g = square4();
+  g.add_segment(g.add_vertex({1, 1}), g.add_vertex({2.5, 3}));
+  g.add_vertex({1.3, 2.7});
+  g.add_vertex({3.1, 0.9});
+  return g;
+}
+
+/// A 4 x 4 square with an inner square loop and no hole point (both sides are the domain).
+pdd::pslg internal_boundary() {
+  pdd::pslg g = square4();
+  g.add_loop(std::vector<pdd::point>{{1, 1}, {3, 1}, {3, 3}, {1, 3}}, 2);
+  return g;
+}
+
+/// A 4 x 4 square with four dangling segments of length 1.5 from its centre, 15 deg apart (a
+/// cluster: cluster-exempt triangles).
+pdd::pslg dangling_fan() {
+  pdd::pslg g = square4();
+  const pdd::index_t c = g.add_vertex({2, 2});
+  for (int i = 0; i < 4; ++i) {
+    const double a = (20.0 + 15.0 * i) * std::numbers::pi / 180.0;
+    g.add_segment(c, g.add_vertex({2 + 1.5 * std::cos(a), 2 + 1.5 * std::sin(a)}));
+  }
+  return g;
+}
+
+/// tests/kernels/triangle_rule_test.cpp UnresolvableAngleIsAMeshingError: two segments leave
+/// (1, 0.168) at about 0.2 deg; the CGAL kernel refuses it with its documented meshing_error
+/// (a pass of the fuzz target), and mutations probe where that refusal starts.
+pdd::pslg sub_degree_angle() {
+  std::istringstream in(R"(# pdd .poly: vertices <#> <dim> <#attributes> <#markers>
+21 2 0 1
+1 0 0 0
+2 0.16820172248941206 0 0
+3 0.695691668343259 0 0
+4 1 0 0
+5 1 0.16820172248941206 0
+6 1 0.695691668343259 0
+7 1 1 0
+8 0.695691668343259 1 0
+9 0.16820172248941206 1 0
+10 0 1 0
+11 0 0.695691668343259 0
+12 0 0.16820172248941206 0
+13 0.22681582160233213 0.25735874195924735 0
+14 0.1716645008941692 0.3504092122288734 0
+15 0.1722126783361483 0.5999858998232309 0
+16 0.3797007097994091 0.38715307713619274 0
+17 0.37457747206113295 0.6491512232554792 0
+18 0.3815167528171107 0.8515433827913961 0
+19 0.630091527254085 0.3705872874781643 0
+20 0.5608863314584913 0.8348916207593444 0
+21 0.7559803333674827 0.2028095094333075 0
+# segments <#> <#markers>
+19 1
+1 1 2 0
+2 2 3 0
+3 3 4 0
+4 4 5 0
+5 5 6 0
+6 6 7 0
+7 7 8 0
+8 8 9 0
+9 9 10 0
+10 10 11 0
+11 11 12 0
+12 12 1 0
+13 15 5 0
+14 5 11 0
+15 11 13 0
+16 8 20 0
+17 11 8 0
+18 8 6 0
+19 13 3 0
+# holes
+0
+)");
+  return pdd::parse_poly(in, "sub-degree.poly", "");
+}
+
+std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
+  pdd::pslg diagonal = square4();
+  diagonal.add_segment(0, 2);
+  return {{"general-internal-diagonal", diagonal},
+          {"general-dangling-isolated", dangling_and_isolated()},
+          {"general-internal-boundary", internal_boundary()},
+          {"general-dangling-fan", dangling_fan()},
+          {"general-layered", pdd::test::layered_domain(0.5)},
+          {"general-pinched", pdd::test::pinched_rings()},
+          {"general-t-junctions", pdd::test::t_junction_grid()},
+          {"general-combined", pdd::test::combined_domain(0.5)},
+          {"general-random-1", pdd::test::random_arrangement(1)},
+          {"general-random-2", pdd::test::random_arrangement(2)},
+          {"general-sub-degree-angle", sub_degree_angle()}};
+}
+
 std::vector<std::pair<std::string, pdd::pslg>> seeds() {
   std::vector<std::pair<std::string, pdd::pslg>> s{
       {"key", pdd::key_domain()},
@@ -85,6 +193,8 @@ std::vector<std::pair<std::string, pdd::pslg>> seeds() {
   };
   for (const std::uint64_t seed : {1u, 2u, 3u, 4u})
     s.emplace_back("random-" + std::to_string(seed), pdd::test::random_domain(seed, 1, 0.5).g);
+  for (auto& general : general_seeds())
+    s.push_back(std::move(general));
   return s;
 }
 

@@ -1,11 +1,14 @@
 // pdd::verify on domains of Triangle's rule (issue 13): isolated input vertices inside the
 // domain must be mesh vertices, internal constraints unions of mesh edges, the area that of the
-// faces (an internal boundary's inside counts).
+// faces (an internal boundary's inside counts); segments with no domain face on either side
+// (dangling outside the domain or in a hole) are left out of the mesh, as Triangle does.
 #include <pdd/generate.hpp>
 #include <pdd/mesh/verify.hpp>
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -58,6 +61,38 @@ TEST(VerifyGeneral, InternalConstraintsAndInternalBoundaries) {
   EXPECT_NEAR(n.area_domain, 16.0, 1e-12);
   nested.rule = pdd::domain_rule::odd_nesting; // the inside is a hole: the mesh covers too much
   EXPECT_FALSE(pdd::verify(mesh_of(nested), nested, criteria()).area_ok);
+}
+
+TEST(VerifyGeneral, SegmentsOutsideTheDomainAreNotAskedFor) {
+  // found by the fuzzer (tests/fuzz): a quadrilateral with a dangling chain from its corner
+  // (0, 0) through (2, 0) to (2, 1) in the unbounded face; Triangle 1.6 -pq20.7a0.1 leaves the
+  // chain out of its mesh, and so does pdd
+  pdd::pslg outside;
+  for (const pdd::point p : {pdd::point{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
+    outside.add_vertex(p);
+  for (const auto& [a, b] : std::vector<std::pair<pdd::index_t, pdd::index_t>>{
+           {0, 1}, {1, 2}, {0, 3}, {3, 4}, {4, 5}, {5, 0}})
+    outside.add_segment(a, b);
+  outside.rule = pdd::domain_rule::triangle;
+  const pdd::verification_report r = pdd::verify(mesh_of(outside), outside, criteria());
+  EXPECT_TRUE(r.ok()) << (r.messages.empty() ? "" : r.messages.front());
+  EXPECT_EQ(r.missing_segments, 0u);
+  EXPECT_NEAR(r.area_domain, 1.5, 1e-12); // the quadrilateral alone
+  // a dangling segment inside a hole is left out as well
+  pdd::pslg in_hole = square();
+  in_hole.add_loop(std::vector<pdd::point>{{1, 1}, {3, 1}, {3, 3}, {1, 3}});
+  in_hole.add_segment(in_hole.add_vertex({1.5, 1.5}), in_hole.add_vertex({2.5, 1.5}));
+  in_hole.holes.push_back({2, 2.5});
+  in_hole.rule = pdd::domain_rule::triangle;
+  EXPECT_TRUE(pdd::verify(mesh_of(in_hole), in_hole, criteria()).ok());
+  // the same kind of segment inside the domain is still asked for
+  pdd::pslg inside = square();
+  inside.add_segment(inside.add_vertex({1, 1}), inside.add_vertex({2.5, 3}));
+  inside.rule = pdd::domain_rule::triangle;
+  const pdd::verification_report m = pdd::verify(mesh_of(square()), inside, criteria());
+  EXPECT_EQ(m.missing_segments, 1u);
+  ASSERT_FALSE(m.messages.empty());
+  EXPECT_NE(m.messages.front().find("segment 4"), std::string::npos) << m.messages.front();
 }
 
 } // namespace

@@ -79,6 +79,20 @@ public:
     return false;
   }
 
+  /// True when a triangle of the domain lies on either side of the PSLG segment (a, b): false
+  /// for a segment with no domain face on either side (by Triangle's rule a dangling segment in
+  /// the unbounded face or in a hole, which is left out of the mesh). True as well when (a, b)
+  /// is no edge of the triangulation (not a segment of the PSLG). Complexity O(degree of a).
+  bool touches_domain(index_t a, index_t b) const {
+    const detail::pslg_cdt& cdt = pf_.lt.triangulation.cdt;
+    detail::pslg_cdt::Face_handle f;
+    int i = 0;
+    if (!cdt.is_edge(pf_.lt.triangulation.vertex[a], pf_.lt.triangulation.vertex[b], f, i))
+      return true;
+    const detail::pslg_cdt::Face_handle n = f->neighbor(i);
+    return (!cdt.is_infinite(f) && pf_.in_domain(f)) || (!cdt.is_infinite(n) && pf_.in_domain(n));
+  }
+
   /// The number of faces of the arrangement (domain_triangle::face < face_count()).
   std::size_t face_count() const noexcept { return pf_.face_in_domain.size(); }
   /// True when the domain is one of closed loops (see detail::pslg_faces::closed_loops).

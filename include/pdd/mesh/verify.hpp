@@ -20,10 +20,12 @@ namespace pdd {
 /// triangle is counter-clockwise and non-degenerate (exact orientation); no two vertices
 /// coincide; every input segment is a union of mesh edges (a chain from the mesh vertex at
 /// one endpoint to the one at the other through vertices on the segment, see
-/// detail::verify_impl::on_segment_line); every edge lies in at most two triangles, interior
-/// edges in opposite directions, and boundary edges lie on input segments; every isolated input
-/// vertex inside the domain (d.rule) is a vertex of a triangle; the triangle areas
-/// sum to pdd::domain_area(d) within o.area_tolerance; every triangle has its smallest angle
+/// detail::verify_impl::on_segment_line), except, with domain_rule::triangle, a segment with no
+/// domain face on either side (a dangling segment outside the domain or in a hole: left out of
+/// the mesh, as Triangle does, like an isolated vertex there); every edge lies in at most two
+/// triangles, interior edges in opposite directions, and boundary edges lie on input segments;
+/// every isolated input vertex inside the domain (d.rule) is a vertex of a triangle; the triangle
+/// areas sum to pdd::domain_area(d) within o.area_tolerance; every triangle has its smallest angle
 /// >= o.criteria.min_angle_deg - 1e-9 deg (unless o.quality_exempt marks it) and its area <=
 /// min(o.criteria.max_area, sizing.area_at(centroid)) * (1 + 1e-12). Input vertices are found in
 /// the mesh by their coordinates, so any vertex numbering works. \tparam S a SizingField. \throws

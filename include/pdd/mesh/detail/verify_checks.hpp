@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -165,7 +166,18 @@ inline std::vector<std::uint8_t> check_edges(const triangle_mesh& m,
   return flags;
 }
 
-/// Walks every input segment along mesh edges (marking them) and reports those that fail.
+/// True when segment sg of d (domain_rule::triangle) has no domain face on either side: a
+/// dangling segment in the unbounded face or in a hole, left out of the mesh as Triangle does.
+/// The faces are built on the first call only (faces holds them).
+inline bool outside_domain(const pslg& d, const segment& sg, std::optional<domain_faces>& faces) {
+  if (d.rule != domain_rule::triangle) return false;
+  if (sg.a >= d.vertices.size() || sg.b >= d.vertices.size() || sg.a == sg.b) return false;
+  if (!faces) faces.emplace(d);
+  return !faces->touches_domain(sg.a, sg.b);
+}
+
+/// Walks every input segment along mesh edges (marking them) and reports those that fail
+/// (except, by Triangle's rule, segments with no domain face on either side).
 inline void report_segments(const triangle_mesh& m, const pslg& d,
                             const verify_impl::vertex_lookup& lookup,
                             verify_impl::edge_table& table, violation_sink& sink) {
@@ -176,11 +188,13 @@ inline void report_segments(const triangle_mesh& m, const pslg& d,
     return it == lookup.end() ? vi::none : it->second;
   };
   std::vector<index_t> path;
+  std::optional<domain_faces> faces; // built only when a segment is not found
   for (std::size_t s = 0; s < d.segments.size(); ++s) {
     const segment& sg = d.segments[s];
     const index_t ma = find(sg.a), mb = find(sg.b);
     if (ma != vi::none && mb != vi::none && ma != mb && vi::walk_segment(table, m, ma, mb, path))
       continue;
+    if (outside_domain(d, sg, faces)) continue;
     sink.add(sink.r.missing_segments, [&] {
       std::string msg = "segment " + std::to_string(s) + " (" + std::to_string(sg.a) + ", " +
                         std::to_string(sg.b) + ")";
