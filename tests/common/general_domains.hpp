@@ -7,12 +7,14 @@
 
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/validate.hpp>
+#include <pdd/io/poly.hpp>
 
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <numbers>
 #include <random>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -164,6 +166,63 @@ inline pslg random_arrangement(std::uint32_t seed, int tries = 14) {
     }
     g = std::move(trial);
   }
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// An arrangement of random_arrangement(7) before its 10 deg filter, by Triangle's rule: two
+/// segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square; the CGAL
+/// kernel refuses it with a meshing_error (the rounded split point falls beyond the other
+/// segment). The kernel's test and the fuzz target's seed corpus use it.
+inline pslg sub_degree_angle_domain() {
+  std::istringstream in(R"(# pdd .poly: vertices <#> <dim> <#attributes> <#markers>
+21 2 0 1
+1 0 0 0
+2 0.16820172248941206 0 0
+3 0.695691668343259 0 0
+4 1 0 0
+5 1 0.16820172248941206 0
+6 1 0.695691668343259 0
+7 1 1 0
+8 0.695691668343259 1 0
+9 0.16820172248941206 1 0
+10 0 1 0
+11 0 0.695691668343259 0
+12 0 0.16820172248941206 0
+13 0.22681582160233213 0.25735874195924735 0
+14 0.1716645008941692 0.3504092122288734 0
+15 0.1722126783361483 0.5999858998232309 0
+16 0.3797007097994091 0.38715307713619274 0
+17 0.37457747206113295 0.6491512232554792 0
+18 0.3815167528171107 0.8515433827913961 0
+19 0.630091527254085 0.3705872874781643 0
+20 0.5608863314584913 0.8348916207593444 0
+21 0.7559803333674827 0.2028095094333075 0
+# segments <#> <#markers>
+19 1
+1 1 2 0
+2 2 3 0
+3 3 4 0
+4 4 5 0
+5 5 6 0
+6 6 7 0
+7 7 8 0
+8 8 9 0
+9 9 10 0
+10 10 11 0
+11 11 12 0
+12 12 1 0
+13 15 5 0
+14 5 11 0
+15 11 13 0
+16 8 20 0
+17 11 8 0
+18 8 6 0
+19 13 3 0
+# holes
+0
+)");
+  pslg g = parse_poly(in, "sub-degree.poly", "");
   g.rule = domain_rule::triangle;
   return g;
 }

@@ -71,6 +71,16 @@ T read_raw(const std::string& s, std::size_t& pos) {
   return v;
 }
 
+/// The offset="..." values of a .vtu's XML header (before the appended data at `base`), in
+/// file order.
+std::vector<std::uint64_t> xml_offsets(const std::string& s, std::size_t base) {
+  std::vector<std::uint64_t> offsets;
+  for (std::size_t q = s.find("offset=\""); q != std::string::npos && q < base;
+       q = s.find("offset=\"", q + 1))
+    offsets.push_back(std::stoull(s.substr(q + 8, 20)));
+  return offsets;
+}
+
 std::size_t count_of(const std::string& s, const std::string& what) {
   std::size_t n = 0;
   for (std::size_t p = s.find(what); p != std::string::npos; p = s.find(what, p + 1))
@@ -135,10 +145,7 @@ TEST(Vtu, RawAppendedLayout) {
   EXPECT_NE(s.find("<AppendedData encoding=\"raw\">"), std::string::npos);
   // Offsets in the XML, in order, must match the blocks that follow '_'.
   const std::size_t base = s.find('_', s.find("<AppendedData")) + 1;
-  std::vector<std::uint64_t> offsets;
-  for (std::size_t q = s.find("offset=\""); q != std::string::npos && q < base;
-       q = s.find("offset=\"", q + 1))
-    offsets.push_back(std::stoull(s.substr(q + 8, 20)));
+  const std::vector<std::uint64_t> offsets = xml_offsets(s, base);
   ASSERT_EQ(offsets.size(), 6u);
   std::size_t pos = base;
   const std::uint64_t sizes[] = {8 * 4, 8 * 4, 8 * 24, 24 * 4, 8 * 4, 8};
@@ -451,10 +458,7 @@ TEST(RegionAttributes, VtuCellDataBlock) {
   EXPECT_EQ(s.rfind("<DataArray type=\"Float64\"", name), s.rfind("<DataArray", name));
   // the blocks in order, each where its offset says; the region block is the third
   const std::size_t base = s.find('_', s.find("<AppendedData")) + 1;
-  std::vector<std::uint64_t> offsets;
-  for (std::size_t q = s.find("offset=\""); q != std::string::npos && q < base;
-       q = s.find("offset=\"", q + 1))
-    offsets.push_back(std::stoull(s.substr(q + 8, 20)));
+  const std::vector<std::uint64_t> offsets = xml_offsets(s, base);
   ASSERT_EQ(offsets.size(), 7u);
   const std::uint64_t sizes[] = {8 * 4, 8 * 4, 8 * 8, 8 * 24, 24 * 4, 8 * 4, 8};
   std::size_t pos = base;

@@ -1,7 +1,6 @@
 // pdd::cgal::mesher on domains of Triangle's rule (pslg::rule, issue 13): internal constraints
 // keep both faces, isolated vertices become mesh vertices, and a constraint pair at an angle
 // too small for double precision is refused with a meshing_error, never a corrupt triangulation.
-#include <pdd/io/poly.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -9,7 +8,12 @@
 
 #include <gtest/gtest.h>
 
-#include <sstream>
+#include "general_domains.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -47,57 +51,8 @@ TEST(CgalMesherTriangleRule, InternalConstraintKeepsBothFaces) {
 }
 
 TEST(CgalMesherTriangleRule, UnresolvableAngleIsAMeshingError) {
-  // a random arrangement (tests/common/general_domains.hpp, seed 7, before its 10 deg filter):
   // two segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square
-  std::istringstream in(R"(# pdd .poly: vertices <#> <dim> <#attributes> <#markers>
-21 2 0 1
-1 0 0 0
-2 0.16820172248941206 0 0
-3 0.695691668343259 0 0
-4 1 0 0
-5 1 0.16820172248941206 0
-6 1 0.695691668343259 0
-7 1 1 0
-8 0.695691668343259 1 0
-9 0.16820172248941206 1 0
-10 0 1 0
-11 0 0.695691668343259 0
-12 0 0.16820172248941206 0
-13 0.22681582160233213 0.25735874195924735 0
-14 0.1716645008941692 0.3504092122288734 0
-15 0.1722126783361483 0.5999858998232309 0
-16 0.3797007097994091 0.38715307713619274 0
-17 0.37457747206113295 0.6491512232554792 0
-18 0.3815167528171107 0.8515433827913961 0
-19 0.630091527254085 0.3705872874781643 0
-20 0.5608863314584913 0.8348916207593444 0
-21 0.7559803333674827 0.2028095094333075 0
-# segments <#> <#markers>
-19 1
-1 1 2 0
-2 2 3 0
-3 3 4 0
-4 4 5 0
-5 5 6 0
-6 6 7 0
-7 7 8 0
-8 8 9 0
-9 9 10 0
-10 10 11 0
-11 11 12 0
-12 12 1 0
-13 15 5 0
-14 5 11 0
-15 11 13 0
-16 8 20 0
-17 11 8 0
-18 8 6 0
-19 13 3 0
-# holes
-0
-)");
-  pdd::pslg g = pdd::parse_poly(in, "seed7.poly", "");
-  g.rule = pdd::domain_rule::triangle;
+  const pdd::pslg g = pdd::test::sub_degree_angle_domain();
   try {
     (void)pdd::cgal::mesher{}.mesh(g, criteria(0.005), pdd::uniform_sizing{});
     ADD_FAILURE() << "meshed";
@@ -107,3 +62,51 @@ TEST(CgalMesherTriangleRule, UnresolvableAngleIsAMeshingError) {
 }
 
 } // namespace
+
+namespace {
+
+/// A closed triangle with a small angle at corner 0 and one dangling segment from that corner
+/// to `out` (a point outside the triangle).
+pdd::pslg corner_with_outside_segment(pdd::point a, pdd::point b, pdd::point c, pdd::point out) {
+  pdd::pslg g;
+  g.add_loop(std::vector<pdd::point>{a, b, c});
+  g.add_segment(0, g.add_vertex(out));
+  g.rule = pdd::domain_rule::triangle;
+  return g;
+}
+
+} // namespace
+
+TEST(CgalMesherTriangleRule, DanglingSegmentOutsideASmallAngleIsLeftOut) {
+  // fuzz findings (tests/fuzz): a dangling segment outside the domain that made a cluster with
+  // a domain corner below 20.7 deg was never split, the cluster never reduced, and the corner's
+  // bad faces were refined without end (3 GB in 8 s, a hang, or a sub-degree meshing_error).
+  // Triangle 1.6 -pq20.7 meshes the first with 8 triangles.
+  const std::vector<pdd::pslg> cases = {
+      corner_with_outside_segment({1, 0}, {-1, 0}, {0.5, -0.15}, {0.5, 0.15}),
+      corner_with_outside_segment({1, 0}, {-1, 0}, {0.5, -0.15}, {0, 0.5}),
+      corner_with_outside_segment({6, 0}, {2, 1}, {0, 1}, {0, 0}),
+  };
+  for (std::size_t k = 0; k < cases.size(); ++k) {
+    SCOPED_TRACE("case " + std::to_string(k));
+    const pdd::pslg& g = cases[k];
+    for (const double area : {std::numeric_limits<double>::infinity(), 0.01}) {
+      const auto r = pdd::cgal::mesher{}.mesh(g, criteria(area), pdd::uniform_sizing{});
+      EXPECT_LT(r.mesh.triangles.size(), std::isinf(area) ? 200u : 20000u);
+      pdd::verify_options vo;
+      vo.criteria = criteria(area);
+      vo.quality_exempt = pdd::find_cluster_exempt_triangles(r.mesh, g, 20.7);
+      const pdd::verification_report rep = pdd::verify(r.mesh, g, vo);
+      EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
+      for (const pdd::mesh_edge& e : r.mesh.segments) // the outside segment is not in the mesh
+        EXPECT_FALSE((e.a == 0 && e.b == 3) || (e.a == 3 && e.b == 0));
+    }
+  }
+  // the same segment inside the domain (a dangling crack into the corner) is kept
+  pdd::pslg inside = corner_with_outside_segment({1, 0}, {-1, 0}, {0.5, -0.15}, {0.2, -0.05});
+  const auto r = pdd::cgal::mesher{}.mesh(inside, criteria(0.01), pdd::uniform_sizing{});
+  bool kept = false;
+  for (const pdd::mesh_edge& e : r.mesh.segments)
+    kept = kept || (std::min(e.a, e.b) == 0 && std::max(e.a, e.b) >= 3);
+  EXPECT_TRUE(kept);
+}

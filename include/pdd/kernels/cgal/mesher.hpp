@@ -28,7 +28,8 @@ namespace pdd::cgal {
 /// Differences from CGAL's Delaunay_mesher_2: the domain is marked before refinement (by
 /// d.rule: odd nesting of segment loops or Triangle's rule, less hole regions, see
 /// concepts/delaunay_mesher.hpp; internal and dangling constraints and isolated vertices are
-/// kept as mesh edges and vertices), a segment
+/// kept as mesh edges and vertices; by Triangle's rule a segment with no domain face on either
+/// side is left out, as Triangle does, detail::cgal_mesh::release_outside_segments), a segment
 /// counts as encroached only by vertices on a side of it that lies in the domain (as in
 /// Triangle), a bad face is left unrefined by the cluster rule for small input angles only when
 /// the small angle lies in the domain (CGAL also did so at sharp corners of holes and notches,
@@ -73,6 +74,7 @@ private:
     const std::vector<dm::vertex_handle> vh = dm::build_cdt(tr, d);
     if (tr.dimension() == 2) {
       dm::mark_domain(tr, d.holes, d.rule);
+      if (d.rule == domain_rule::triangle) dm::release_outside_segments(tr, d.holes);
       sizing_criteria<dm::cdt, S> crit(c.shape_bound(), c.max_area, sizing);
       dm::refine(tr, crit);
     }

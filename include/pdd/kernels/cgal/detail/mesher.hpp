@@ -213,6 +213,37 @@ inline void mark_domain(cdt& tr, const std::vector<point>& holes, domain_rule ru
   }
 }
 
+/// Leaves out of the refinement, by Triangle's rule, every segment with no domain face on
+/// either side (dangling in the unbounded face or in a hole): Triangle leaves it out of the
+/// mesh, and so does extract(). Kept as a constraint it stalled refinement: domain_gabriel never
+/// finds such a segment encroached (it counts vertices on domain sides only), so it is never
+/// split, and a cluster it belongs to (an angle below 60 deg with a domain segment at a shared
+/// vertex) is never reduced, so the bad faces inside the domain's small angle beside it were
+/// refined without end (a fuzz finding: a 16.7 deg domain corner with a dangling segment outside
+/// it ran out of memory). Its edges are un-constrained (CGAL restores the Delaunay property by
+/// flips, all among faces outside the domain, which constraints separate from the domain's) and
+/// the domain is marked again: the domain's faces are the same, since a path from the
+/// unbounded face into the domain never crosses only such a segment.
+/// \returns the number of segments left out. Complexity O(edges + faces).
+inline std::size_t release_outside_segments(cdt& tr, const std::vector<point>& holes) {
+  std::vector<std::pair<vertex_handle, vertex_handle>> outside;
+  for (auto e = tr.finite_edges_begin(); e != tr.finite_edges_end(); ++e) {
+    const face_handle f = e->first;
+    const int i = e->second;
+    const face_handle n = f->neighbor(i);
+    if (f->is_constrained(i) && !(!tr.is_infinite(f) && f->is_in_domain()) &&
+        !(!tr.is_infinite(n) && n->is_in_domain()))
+      outside.emplace_back(f->vertex(cdt::cw(i)), f->vertex(cdt::ccw(i)));
+  }
+  for (const auto& [a, b] : outside) {
+    face_handle f;
+    int i = 0;
+    if (tr.is_edge(a, b, f, i)) tr.remove_constrained_edge(f, i);
+  }
+  if (!outside.empty()) mark_domain(tr, holes, domain_rule::triangle);
+  return outside.size();
+}
+
 /// Inserts the vertices, spatially sorted, with their input index as info.
 /// \throws meshing_error for a non-finite coordinate or coinciding vertices.
 /// \returns the vertex handle of every input vertex.
