@@ -28,8 +28,7 @@ pdd::pslg two_components() {
 
 pdd::point centroid(const pdd::triangle_mesh& m, std::size_t t) {
   const auto& tri = m.triangles[t];
-  const pdd::point a = m.vertices[tri[0]], b = m.vertices[tri[1]], c = m.vertices[tri[2]];
-  return {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
+  return pdd::detail::triangle_centroid(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
 }
 
 } // namespace

@@ -6,6 +6,7 @@
 
 #include <pdd/core/index.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/sizing/regional.hpp>
@@ -61,8 +62,8 @@ inline std::vector<index_t> triangle_faces(const domain_faces& faces, const tria
   for (std::size_t seed = 0; seed < m.triangles.size(); ++seed) {
     if (seen[seed]) continue;
     const auto& t = m.triangles[seed];
-    const point a = m.vertices[t[0]], b = m.vertices[t[1]], c = m.vertices[t[2]];
-    const face_location at = faces.locate({(a.x + b.x + c.x) / 3.0, (a.y + b.y + c.y) / 3.0});
+    const face_location at = faces.locate(
+        detail::triangle_centroid(m.vertices[t[0]], m.vertices[t[1]], m.vertices[t[2]]));
     seen[seed] = 1;
     stack.assign(1, seed);
     while (!stack.empty()) {
