@@ -154,13 +154,9 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.domain = pdd::read_poly(o.input);
   r.props = pdd::analyze(r.domain); // validates, throws geometry_error
   // Not closed loops (internal or dangling segments, isolated vertices, touching loops,
-  // internal boundaries): Triangle's rule, meshed whole (--subdomains > 1 is refused).
-  if (!r.props.closed_loops) {
-    r.domain.rule = pdd::domain_rule::triangle;
-    if (!o.quiet && o.subdomains <= 1) // more is refused by the pipeline, with the reason
-      std::printf("pdd-mesh: the domain is not one of closed loops: meshed whole (one "
-                  "subdomain), small angles between segments by the kernel's clusters\n");
-  }
+  // internal boundaries): Triangle's rule; the pipeline decouples it from its faces or meshes
+  // it whole (the summary prints its plan_reason).
+  if (!r.props.closed_loops) r.domain.rule = pdd::domain_rule::triangle;
   if (!o.quiet && !o.region_attributes && has_region_attributes(r.domain))
     std::printf("pdd-mesh: note: the regions of %s carry attributes; -A writes them with the "
                 "mesh\n",
@@ -364,6 +360,7 @@ void add_run_stats(const mesh_run& r, nlohmann::json& j) {
 
 /// The summary lines on stdout (not with --quiet).
 void print_summary(const cli_options& o, const mesh_run& r) {
+  if (r.gs.general_domain) std::printf("pdd-mesh: %s\n", r.gs.plan_reason.c_str());
   std::printf("pdd-mesh: %zu triangles in %zu subdomain(s) on %u thread(s), %.3f s\n",
               r.triangles(), r.gs.subdomains, r.gs.threads, r.t_total);
   if (r.st)

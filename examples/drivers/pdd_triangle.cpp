@@ -139,7 +139,9 @@ int run(const cli_options& o) {
     std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms_since(tm), n);
     if (!t.runs.empty() && t.runs.front().general_domain)
       std::printf("The domain is not one of closed loops (internal or dangling segments, "
-                  "isolated vertices, touching loops or internal boundaries): meshed whole.\n");
+                  "isolated vertices, touching loops or internal boundaries): %s.\n",
+                  n > 1 ? "decoupled from its faces, the segments between faces as interfaces"
+                        : "meshed whole");
   }
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {

@@ -75,6 +75,7 @@
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
+#include <pdd/madd/face_decoupling.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/madd/validate_decomposition.hpp>

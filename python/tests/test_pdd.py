@@ -228,7 +228,8 @@ def test_readme_shows_the_example_script():
 
 def test_general_pslg_internal_dangling_and_isolated():
     # issue 13: an internal constraint (the diagonal), a dangling segment and an isolated vertex,
-    # meshed whole by Triangle's rule, with a uniform bound and with a sizing callable
+    # meshed whole by Triangle's rule, with a uniform bound and with a sizing callable; N > 1 is
+    # refused naming the dangling segment
     sq = square()
     v = np.vstack([sq["vertices"], [[0.1, 0.5], [0.3, 0.8], [0.8, 0.3]]])
     s = np.vstack([sq["segments"], [[0, 2], [4, 5]]])
@@ -241,5 +242,5 @@ def test_general_pslg_internal_dangling_and_isolated():
         assert 6 in set(t.ravel().tolist())  # the isolated vertex is a mesh vertex
         # the dangling segment's ends are ends of mesh edges on segments (its subsegments)
         assert {4, 5} <= set(r["segments"].ravel().tolist())
-    with pytest.raises(RuntimeError, match="closed loops"):
+    with pytest.raises(RuntimeError, match="cannot decouple this domain: segment 5 .*dangling"):
         pdd.mesh(v, s, max_area=0.005, subdomains=4)

@@ -2,7 +2,7 @@
 // (internal constraints, vertices of degree 3 and 4), holes that touch each other and the outer
 // boundary at pinch vertices, a T-junction (brick wall) grid, a combined one (dangling crack,
 // isolated well, internal boundary), and random arrangements with internal and dangling
-// constraints and isolated vertices.
+// constraints and isolated vertices, and random maps (faces of a jittered grid by colour).
 #pragma once
 
 #include <pdd/core/pslg.hpp>
@@ -166,6 +166,61 @@ inline pslg random_arrangement(std::uint32_t seed, int tries = 14) {
     }
     g = std::move(trial);
   }
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// A random map on an n x n grid of unit cells (interior grid vertices jittered by up to 0.3):
+/// each cell takes the colour of the nearest of five random sites, colour 0 is a hole (a hole
+/// point in each of its cells); the segments are the outer boundary and the grid edges
+/// between cells of different colours (internal constraints, vertices of degree 2 to 4, no
+/// dangling segment and no isolated vertex). Faces may touch themselves at a vertex and
+/// corners may fall below 60 deg. Deterministic for a seed.
+inline pslg random_map(std::uint32_t seed, int n = 6) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(0.0, n), jitter(-0.3, 0.3);
+  std::vector<point> grid; // (n + 1)^2 corners, row by row
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const bool border = i == 0 || j == 0 || i == n || j == n;
+      grid.push_back({i + (border ? 0.0 : jitter(rng)), j + (border ? 0.0 : jitter(rng))});
+    }
+  std::vector<point> sites(5);
+  for (point& p : sites)
+    p = {u(rng), u(rng)};
+  std::vector<int> colour(static_cast<std::size_t>(n * n));
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const point c{i + 0.5, j + 0.5};
+      int best = 0;
+      for (int k = 1; k < 5; ++k)
+        if (std::hypot(sites[k].x - c.x, sites[k].y - c.y) <
+            std::hypot(sites[best].x - c.x, sites[best].y - c.y))
+          best = k;
+      colour[static_cast<std::size_t>(j * n + i)] = best;
+    }
+  const auto cell = [&](int i, int j) { // -1 outside the grid
+    return i < 0 || j < 0 || i >= n || j >= n ? -1 : colour[static_cast<std::size_t>(j * n + i)];
+  };
+  pslg g;
+  std::vector<index_t> id(grid.size(), no_index);
+  const auto vertex = [&](int i, int j) {
+    const auto k = static_cast<std::size_t>(j * (n + 1) + i);
+    if (id[k] == no_index) id[k] = g.add_vertex(grid[k]);
+    return id[k];
+  };
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      if (i < n && cell(i, j - 1) != cell(i, j)) g.add_segment(vertex(i, j), vertex(i + 1, j));
+      if (j < n && cell(i - 1, j) != cell(i, j)) g.add_segment(vertex(i, j), vertex(i, j + 1));
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i)
+      if (cell(i, j) == 0) {
+        const auto k = static_cast<std::size_t>(j * (n + 1) + i);
+        const point a = grid[k], b = grid[k + 1], c = grid[k + n + 2], d = grid[k + n + 1];
+        g.holes.push_back({(a.x + b.x + c.x + d.x) / 4, (a.y + b.y + c.y + d.y) / 4});
+      }
   g.rule = domain_rule::triangle;
   return g;
 }

@@ -1,5 +1,6 @@
 // pdd-mesh -A (--region-attributes): the .poly's regional attributes written with the mesh, in
-// the decoupled and the monolithic (general domain) run, counted in --stats; a note without -A.
+// the decoupled runs (closed loops, and a general domain decoupled from its faces) and the
+// monolithic one (general domain), counted in --stats; a note without -A; refusals.
 #include <pdd/io/poly.hpp>
 
 #include <gtest/gtest.h>
@@ -131,4 +132,30 @@ TEST(PddMeshRegionAttributes, GeneralDomainNoteAndRefusals) {
   const auto per = run_mesh(poly.string() + " --max-area 0.05 -A --output-per-subdomain " +
                             pdd::test::temp_path("layered_pieces").string());
   EXPECT_EQ(per.code, 2) << per.output;
+}
+
+TEST(PddMeshRegionAttributes, GeneralDomainDecoupledFromItsFaces) {
+  const auto poly = pdd::test::temp_path("layered16.poly");
+  pdd::write_poly(poly, pdd::test::layered_domain(0.01));
+  const auto node = pdd::test::temp_path("layered16_out.node");
+  const auto stats = pdd::test::temp_path("layered16_stats.json");
+  const auto r = run_mesh(poly.string() +
+                          " --max-area 0.01 --subdomains 16 --threads 2 -A "
+                          "--verify -o " +
+                          node.string() + " --stats " + stats.string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("MADD from its 5 faces"), std::string::npos) << r.output;
+  std::ifstream in(stats);
+  const nlohmann::json j = nlohmann::json::parse(in);
+  EXPECT_EQ(j["subdomains"], 16);
+  EXPECT_EQ(j["conforming"], true);
+  EXPECT_EQ(j["region_attributes"].size(), 5u) << j.dump();
+  // a dangling crack and an isolated well: N > 1 is refused naming the segment, exit 1
+  const auto combined = pdd::test::temp_path("combined.poly");
+  pdd::write_poly(combined, pdd::test::combined_domain(0.05));
+  const auto no = run_mesh(combined.string() + " --max-area 0.05 --subdomains 4 -o " +
+                           pdd::test::temp_path("combined_out.node").string());
+  EXPECT_EQ(no.code, 1) << no.output;
+  EXPECT_NE(no.output.find("dangling segment"), std::string::npos) << no.output;
+  EXPECT_FALSE(fs::exists(pdd::test::temp_path("combined_out.node")));
 }

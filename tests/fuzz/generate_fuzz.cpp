@@ -15,9 +15,12 @@
 //   dangling outside the domain, is left out of the mesh as Triangle 1.6 does), every isolated
 //   vertex in the domain a mesh vertex, the area of the faces; exempt from the angle bound are
 //   the cluster-exempt triangles at angles < 60 deg between segments
-//   (pdd::find_cluster_exempt_triangles) only. N = 2 must be refused with a
-//   pdd::decomposition_error (the decoupled pipeline needs closed loops); a mesh or any other
-//   exception there is a finding.
+//   (pdd::find_cluster_exempt_triangles) only. N = 2 decouples it from its faces (N raised to
+//   the number of faces; the segments between faces are interfaces) and is verified the same
+//   way (a shielded corner has its vertices on the two segments of a small angle, so the
+//   cluster exemption covers it), or refuses it with a pdd::decomposition_error (a dangling
+//   segment, an isolated vertex, a face that touches itself, a corner < 60 deg on a segment
+//   between faces); a meshing_error or any other exception there is a finding.
 //
 // Refusals of bad input are passes: pdd::input_error (parser), pdd::geometry_error (validate,
 // shields), pdd::decomposition_error (MADD cannot split the domain as asked), pdd::limit_error,
@@ -96,13 +99,13 @@ constexpr double unresolvable_angle_deg = 1.0;
 /// What happened to the inputs, by kind of domain (0: closed loops, 1: general), printed at
 /// exit so that a run shows how many inputs were meshed and verified rather than skipped.
 struct outcome_counts {
-  std::size_t refused_input = 0;      // parser or validate() refused the bytes, > 256 vertices
-  std::size_t skipped[2] = {0, 0};    // beyond the size limits
-  std::size_t verified[2] = {0, 0};   // N = 1 meshed and verified
-  std::size_t refused[2] = {0, 0};    // N = 1 refused (geometry, decomposition, limit error)
-  std::size_t angle_refusals = 0;     // general: the kernel's documented sub-degree angle refusal
-  std::size_t n2_verified = 0;        // closed loops: N = 2 meshed and verified
-  std::size_t n2_refused_general = 0; // general: N = 2 refused with a decomposition_error
+  std::size_t refused_input = 0;       // parser or validate() refused the bytes, > 256 vertices
+  std::size_t skipped[2] = {0, 0};     // beyond the size limits
+  std::size_t verified[2] = {0, 0};    // N = 1 meshed and verified
+  std::size_t refused[2] = {0, 0};     // N = 1 refused (geometry, decomposition, limit error)
+  std::size_t angle_refusals = 0;      // general: the kernel's documented sub-degree angle refusal
+  std::size_t n2_verified[2] = {0, 0}; // N = 2 meshed and verified
+  std::size_t n2_refused[2] = {0, 0};  // N = 2 refused (geometry, decomposition, limit error)
 };
 outcome_counts counts;
 
@@ -112,11 +115,12 @@ void print_counts() {
       stderr,
       "pdd fuzz outcomes: %zu refused as input (or > 256 vertices); "
       "closed loops: %zu skipped (size), %zu verified N = 1, %zu refused N = 1, "
-      "%zu verified N = 2; "
+      "%zu verified N = 2, %zu refused N = 2; "
       "general: %zu skipped (size), %zu verified N = 1, "
-      "%zu refused N = 1 (%zu for a sub-degree angle), %zu N = 2 refused as they must be\n",
-      c.refused_input, c.skipped[0], c.verified[0], c.refused[0], c.n2_verified, c.skipped[1],
-      c.verified[1], c.refused[1] + c.angle_refusals, c.angle_refusals, c.n2_refused_general);
+      "%zu refused N = 1 (%zu for a sub-degree angle), %zu verified N = 2, %zu refused N = 2\n",
+      c.refused_input, c.skipped[0], c.verified[0], c.refused[0], c.n2_verified[0], c.n2_refused[0],
+      c.skipped[1], c.verified[1], c.refused[1] + c.angle_refusals, c.angle_refusals,
+      c.n2_verified[1], c.n2_refused[1]);
 }
 
 /// Reports a finding and aborts (libFuzzer then saves the input as crash-<hash>).
@@ -273,35 +277,19 @@ void mesh_and_check(const fuzz_domain& d, const pdd::mesh_criteria& c, std::size
   } catch (const pdd::decomposition_error&) {
   } catch (const pdd::limit_error&) {
   } catch (const pdd::meshing_error& e) {
-    if (!unresolvable_angle_refusal(e, d)) finding("N = " + std::to_string(n) + ": " + e.what());
+    if (n != 1 || !unresolvable_angle_refusal(e, d))
+      finding("N = " + std::to_string(n) + ": " + e.what());
     ++counts.angle_refusals;
     return;
   } catch (const std::exception& e) {
     finding("N = " + std::to_string(n) + ": " + e.what());
   }
   if (!r) {
-    if (n == 1) ++counts.refused[d.general];
+    ++(n == 1 ? counts.refused : counts.n2_refused)[d.general];
     return;
   }
   check_mesh(r->mesh, d, c, n);
-  ++(n == 1 ? counts.verified[d.general] : counts.n2_verified);
-}
-
-/// N = 2 on a general domain: must be refused with a decomposition_error.
-void expect_refused(const fuzz_domain& d, const pdd::mesh_criteria& c) {
-  pdd::generate_options o;
-  o.criteria = c;
-  o.subdomains = 2;
-  o.threads = 2;
-  try {
-    (void)pdd::generate(d.input, o);
-  } catch (const pdd::decomposition_error&) {
-    ++counts.n2_refused_general;
-    return;
-  } catch (const std::exception& e) {
-    finding(std::string("N = 2 on a general domain: not a decomposition_error: ") + e.what());
-  }
-  finding("N = 2 on a general domain: meshed instead of refused");
+  ++(n == 1 ? counts.verified : counts.n2_verified)[d.general];
 }
 
 } // namespace
@@ -325,10 +313,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       return 0;
     }
     mesh_and_check(*d, *c, 1);
-    if (d->general)
-      expect_refused(*d, *c);
-    else
-      mesh_and_check(*d, *c, 2);
+    mesh_and_check(*d, *c, 2);
   } catch (const std::exception& e) {
     finding(std::string("unexpected exception: ") + e.what());
   }

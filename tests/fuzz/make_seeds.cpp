@@ -1,10 +1,11 @@
 // Writes the generated part of the fuzzer's seed corpus: small domains made by pdd's own
 // generators (model domains, the geometry tests' random domains) and a few hand-shaped ones that
 // reach the interesting paths (small input angles that get shielded, holes, thin parts, a
-// regions section), and small general domains (issue 13, meshed whole by Triangle's rule: an
-// internal constraint, a dangling segment and isolated vertices, an internal boundary, loops
-// touching at pinch vertices, a T-junction grid, a fan of dangling segments at 15 deg, random
-// arrangements, tests/common/general_domains.hpp; one with a 0.2 deg angle the kernel refuses).
+// regions section), and small general domains (issue 13, by Triangle's rule, meshed whole or
+// decoupled from their faces: an internal constraint, a dangling segment and isolated vertices,
+// an internal boundary, loops touching at pinch vertices, a T-junction grid, a fan of dangling
+// segments at 15 deg, random arrangements and maps, tests/common/general_domains.hpp; one with a
+// 0.2 deg angle the kernel refuses).
 // The bundled examples/data files are the other seeds.
 //
 //   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
@@ -118,6 +119,8 @@ std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
           {"general-combined", pdd::test::combined_domain(0.5)},
           {"general-random-1", pdd::test::random_arrangement(1)},
           {"general-random-2", pdd::test::random_arrangement(2)},
+          {"general-map-1", pdd::test::random_map(1, 4)},
+          {"general-map-2", pdd::test::random_map(2, 4)},
           {"general-sub-degree-angle", pdd::test::sub_degree_angle_domain()}};
 }
 

@@ -3,8 +3,11 @@
 // meshed whole by pdd::generate, verified (exact Delaunay, every constraint a union of mesh
 // edges, isolated vertices as mesh vertices, the area of the faces, the area bound per face,
 // the angle bound outside the cluster-exempt triangles), bitwise the same on 1 and 2 threads,
-// with triangle counts close to Triangle 1.6's; N > 1 asked for is refused, automatic N is one
-// subdomain with the reason in the statistics.
+// with triangle counts close to Triangle 1.6's. And the decoupled half: a domain whose faces
+// are polygons with holes (internal constraints, internal boundaries, T-junctions) is decomposed
+// by MADD from its faces for N in {2, 16, 64}, the segments between faces interfaces of the
+// decoupling path, verified the same way, bitwise the same on 1 and 2 threads; a domain that
+// cannot be decoupled is refused for N > 1 (naming why) and meshed whole for automatic N.
 #include "general_domains.hpp"
 #include "mesh_compare.hpp"
 #include "test_support.hpp"
@@ -13,16 +16,24 @@
 #include <pdd/io/poly.hpp>
 #include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/quality_check.hpp>
+#include <pdd/mesh/region_attributes.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/sizing/regional.hpp>
 #include <pdd/triangle/triangulate.hpp>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <map>
+#include <numbers>
+#include <optional>
+#include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace {
 
@@ -192,21 +203,188 @@ TEST(GeneralPslg, SharedDataFiles) {
   }
 }
 
-TEST(GeneralPslg, SubdomainsAskedForAreRefused) {
-  pdd::generate_options o = options(0.02);
-  o.subdomains = 4;
-  try {
-    (void)pdd::generate(pdd::test::layered_domain(), o);
-    ADD_FAILURE() << "accepted";
-  } catch (const pdd::decomposition_error& e) {
-    EXPECT_NE(std::string(e.what()).find("subdomains = 4 needs a domain of closed loops"),
-              std::string::npos)
-        << e.what();
+/// The total length of m's segments and of d's segments with a domain face on a side: equal
+/// when every constraint is kept once in the merged mesh (an internal constraint is an
+/// interface of the decoupled pipeline: kept from one side only).
+void expect_segments_kept_once(const pdd::triangle_mesh& m, const pslg& d, const std::string& at) {
+  const pdd::domain_faces faces(d);
+  double input = 0.0, kept = 0.0;
+  for (const pdd::segment& s : d.segments)
+    if (faces.touches_domain(s.a, s.b))
+      input +=
+          std::hypot(d.vertices[s.b].x - d.vertices[s.a].x, d.vertices[s.b].y - d.vertices[s.a].y);
+  std::set<std::pair<pdd::index_t, pdd::index_t>> seen;
+  for (const pdd::mesh_edge& e : m.segments) {
+    EXPECT_TRUE(seen.emplace(std::min(e.a, e.b), std::max(e.a, e.b)).second) << at << ": twice";
+    kept +=
+        std::hypot(m.vertices[e.b].x - m.vertices[e.a].x, m.vertices[e.b].y - m.vertices[e.a].y);
   }
-  o.subdomains = 0; // automatic: one subdomain, with the reason
-  const pdd::generate_result r = pdd::generate(pdd::test::layered_domain(), o);
-  EXPECT_EQ(r.statistics.subdomains, 1u);
-  EXPECT_TRUE(r.statistics.general_domain);
+  EXPECT_NEAR(kept, input, 1e-9 * input) << at;
+}
+
+/// Every subdomain (triangle marker) of m lies in one face of d.
+void expect_subdomains_in_one_face(const pdd::triangle_mesh& m, const pslg& d,
+                                   const std::string& at) {
+  const std::vector<pdd::index_t> face = pdd::triangle_faces(pdd::domain_faces(d), m);
+  std::map<int, pdd::index_t> face_of_subdomain;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto [it, fresh] = face_of_subdomain.emplace(m.triangle_markers[t], face[t]);
+    ASSERT_EQ(it->second, face[t]) << at << ": subdomain " << m.triangle_markers[t];
+  }
+}
+
+/// The decouplable domains of closed faces: name, domain, area bound, number of faces.
+struct face_case {
+  const char* name;
+  pslg domain;
+  double max_area;
+  std::size_t faces;
+};
+
+std::vector<face_case> face_cases() {
+  pslg oblique; // a square cut by an oblique chord: two faces, corners of 76 and 104 deg
+  oblique.add_loop(std::vector<pdd::point>{{0, 0}, {1.5, 0}, {4, 0}, {4, 4}, {2.5, 4}, {0, 4}});
+  oblique.add_segment(1, 4);
+  pslg nested; // an internal boundary: a square loop inside without a hole point
+  nested.add_loop(std::vector<pdd::point>{{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  nested.add_loop(std::vector<pdd::point>{{1, 1}, {3, 1}, {3, 3}, {1, 3}});
+  return {{"layered", pdd::test::layered_domain(), 0.003, 5},
+          {"tgrid", pdd::test::t_junction_grid(), 0.0008, 10},
+          {"oblique", oblique, 0.0008, 2},
+          {"nested", nested, 0.0008, 2}};
+}
+
+TEST(GeneralPslg, DecoupledFromItsFacesVerifiedAndDeterministic) {
+  for (const face_case& c : face_cases()) {
+    pslg d = c.domain;
+    d.regions.clear();
+    const pdd::generate_result whole = pdd::generate(d, options(c.max_area));
+    d.rule = pdd::domain_rule::triangle;
+    for (const std::size_t n : {2u, 16u, 64u}) {
+      const std::string at = std::string(c.name) + " N = " + std::to_string(n);
+      SCOPED_TRACE(at);
+      pdd::generate_options o = options(c.max_area, 1);
+      o.subdomains = n;
+      const pdd::generate_result one = pdd::generate(d, o);
+      o.threads = 2;
+      const pdd::generate_result two = pdd::generate(d, o);
+      EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, two.mesh));
+      EXPECT_EQ(one.statistics.subdomains, std::max(n, c.faces));
+      EXPECT_EQ(one.statistics.path, "uniform");
+      EXPECT_EQ(one.statistics.interface_splits, 0u);
+      EXPECT_NE(
+          one.statistics.plan_reason.find("MADD from its " + std::to_string(c.faces) + " faces"),
+          std::string::npos)
+          << one.statistics.plan_reason;
+      expect_verified(one.mesh, d, c.max_area, at);
+      expect_segments_kept_once(one.mesh, d, at);
+      expect_subdomains_in_one_face(one.mesh, d, at);
+      const double ratio = static_cast<double>(one.mesh.triangles.size()) /
+                           static_cast<double>(whole.mesh.triangles.size());
+      EXPECT_LT(std::abs(ratio - 1.0), n == 64 ? 0.08 : 0.05)
+          << one.mesh.triangles.size() << " vs whole " << whole.mesh.triangles.size();
+    }
+  }
+}
+
+TEST(GeneralPslg, DecoupledFacesCarryTheirRegionalAttributes) {
+  const pslg d = pdd::test::layered_domain(0.004);
+  pdd::generate_options o = options(0.004, 2);
+  o.subdomains = 16;
+  o.sizing = pdd::regional_sizing(d);
+  const pdd::generate_result r = pdd::generate(d, o);
+  EXPECT_EQ(r.statistics.subdomains, 16u);
+  expect_verified(r.mesh, d, 0.004, "layered", pdd::regional_sizing(d));
+  expect_subdomains_in_one_face(r.mesh, d, "layered");
+  const std::vector<double> attributes = pdd::region_attributes(d, r.mesh);
+  std::map<int, double> subdomain_attribute;
+  std::set<double> seen;
+  for (std::size_t t = 0; t < attributes.size(); ++t) {
+    seen.insert(attributes[t]);
+    EXPECT_EQ(subdomain_attribute.emplace(r.mesh.triangle_markers[t], attributes[t]).first->second,
+              attributes[t]);
+  }
+  EXPECT_EQ(seen, (std::set<double>{1, 2, 3, 4, 5}));
+}
+
+TEST(GeneralPslg, WhatCannotBeDecoupledIsRefusedOrMeshedWhole) {
+  const auto square = [] {
+    pslg g;
+    g.add_loop(std::vector<pdd::point>{{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+    return g;
+  };
+  std::vector<std::pair<std::string, pslg>> cases; // the words the refusal must contain
+  pslg dangling = square();
+  dangling.add_segment(dangling.add_vertex({1, 1}), dangling.add_vertex({2.5, 3}));
+  cases.emplace_back("a dangling segment", dangling);
+  pslg isolated = square();
+  isolated.add_vertex({1.3, 2.7});
+  cases.emplace_back("an isolated vertex", isolated);
+  cases.emplace_back("visited twice", pdd::test::pinched_rings());
+  pslg corner; // a chord from (0, 0) at 30 deg to the bottom side, ending on the right side
+  corner.add_loop(std::vector<pdd::point>{
+      {0, 0}, {4, 0}, {4, 4 * std::tan(std::numbers::pi / 6)}, {4, 4}, {0, 4}});
+  corner.add_segment(0, 2);
+  cases.emplace_back("below 60 deg", corner);
+  for (const auto& [words, g] : cases) {
+    SCOPED_TRACE(words);
+    pdd::generate_options o = options(0.01);
+    o.subdomains = 4;
+    try {
+      (void)pdd::generate(g, o);
+      ADD_FAILURE() << "accepted";
+    } catch (const pdd::decomposition_error& e) {
+      EXPECT_NE(std::string(e.what()).find("subdomains = 4 cannot decouple this domain"),
+                std::string::npos)
+          << e.what();
+      EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+    }
+    o.subdomains = 0; // automatic, planned > 1 on this size: one subdomain, with the reason
+    o.threads = 2;
+    o.planning.min_subdomain_triangles = 100;
+    const pdd::generate_result r = pdd::generate(g, o);
+    EXPECT_EQ(r.statistics.subdomains, 1u);
+    EXPECT_NE(r.statistics.plan_reason.find("cannot be decoupled"), std::string::npos)
+        << r.statistics.plan_reason;
+    pslg as_meshed = g;
+    as_meshed.rule = pdd::domain_rule::triangle;
+    expect_verified(r.mesh, as_meshed, 0.01, words);
+  }
+}
+
+TEST(GeneralPslg, RandomMapsAreDecoupledOrRefused) {
+  // 60 random maps (faces of a jittered 6 x 6 grid, one colour a hole), N = 8 on 2 threads:
+  // verified with every constraint kept once, or refused with a decomposition_error naming a
+  // face that touches itself or a constraint corner below 60 deg; every fifth also on 1 thread
+  std::size_t decoupled = 0, refused = 0;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+    const pslg d = pdd::test::random_map(seed);
+    const std::string at = "seed " + std::to_string(seed);
+    pdd::generate_options o = options(0.01, 2);
+    o.subdomains = 8;
+    std::optional<pdd::generate_result> r;
+    try {
+      r = pdd::generate(d, o);
+    } catch (const pdd::decomposition_error& e) {
+      const std::string what = e.what();
+      EXPECT_TRUE(what.find("visited twice") != std::string::npos ||
+                  what.find("below 60 deg") != std::string::npos)
+          << at << ": " << what;
+      ++refused;
+      continue;
+    }
+    ++decoupled;
+    EXPECT_GE(r->statistics.subdomains, 8u) << at;
+    EXPECT_EQ(r->statistics.interface_splits, 0u) << at;
+    expect_verified(r->mesh, d, 0.01, at);
+    expect_segments_kept_once(r->mesh, d, at);
+    expect_subdomains_in_one_face(r->mesh, d, at);
+    if (seed % 5 == 0) {
+      o.threads = 1;
+      EXPECT_TRUE(pdd::test::bitwise_equal(r->mesh, pdd::generate(d, o).mesh)) << at;
+    }
+  }
+  EXPECT_GE(decoupled, 25u) << refused << " refused"; // 34 of 60 here
 }
 
 TEST(GeneralPslg, RandomArrangementsAreVerified) {

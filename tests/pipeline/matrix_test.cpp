@@ -40,7 +40,7 @@ std::vector<named_domain> matrix_domains() {
     try {
       pdd::pslg d = pdd::read_poly(f);
       const pdd::pslg_properties p = pdd::analyze(d);
-      // not made of closed loops: meshed whole, tests/pipeline/general_pslg_test.cpp
+      // not made of closed loops: tests/pipeline/general_pslg_test.cpp
       if (p.closed_loops && p.min_angle_deg >= 60.0)
         out.push_back({f.filename().string(), std::move(d), 40000});
     } catch (const pdd::error&) {

@@ -7,9 +7,11 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/geometry/validate.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/detail/assemble.hpp>
+#include <pdd/madd/detail/face_regions.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/rounds.hpp>
 #include <pdd/madd/detail/split.hpp>
@@ -29,6 +31,20 @@
 
 namespace pdd {
 
+namespace detail {
+/// The regions MADD starts from: the connected components of a domain of closed loops
+/// (regions_of), or the faces of a general PSLG (face_regions: each internal constraint then
+/// becomes an interface between the subdomains on its two sides).
+/// \throws decomposition_error when a general PSLG cannot be decoupled (the reason names the
+/// segment or vertex); geometry_error for an invalid PSLG.
+inline std::vector<madd_region> initial_regions(const pslg& g) {
+  if (has_closed_loops(g)) return regions_of(g);
+  face_region_set f = face_regions(g);
+  if (!f.refusal.empty()) throw decomposition_error("MADD: " + f.refusal);
+  return std::move(f.regions);
+}
+} // namespace detail
+
 /// Decomposes the domain of g into subdomains by MADD (dissertation ch. 3-4): N-way by divide
 /// and conquer (3.7), the largest subdomains first, concurrently in rounds (4.3: a round
 /// splits the min(count, N - count) largest subdomains, each split a pure function of its
@@ -40,8 +56,14 @@ namespace pdd {
 /// angles below Phi0 stay, no separator ends there); both sides of an interface share vertex
 /// ids; see validate_decomposition().
 /// \tparam P a GraphPartitioner (default: METIS when found).
-/// \pre g's segments form closed loops that do not intersect (validate()).
-/// \throws geometry_error as find_loops for bad input; decomposition_error for bad options, or
+/// A general PSLG (pdd::has_closed_loops false: internal constraints, loops nested without a
+/// hole point) starts from its faces (pdd::domain_faces by g.rule), each at least one
+/// subdomain: a segment between two faces is an interface of the result (edge_tag::on_segment)
+/// and gets the vertices of the separators that end on it from either side.
+/// \pre g is valid (validate()).
+/// \throws geometry_error as find_loops for bad input; decomposition_error for bad options, for
+/// a general PSLG with a dangling segment, an isolated vertex, a face that touches itself or a
+/// corner < 60 deg on an internal constraint (the message names it), or
 /// when the domain cannot be split as asked (a subdomain too thin or with too few junction
 /// triangles after max_refinement_levels: the message names the subdomain and the reason).
 /// Complexity: about O(sum over splits of |Z| log |Z|); N = 1024 on a pipe cross-section takes
@@ -51,7 +73,7 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
                         decomposition_statistics* stats = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   detail::check_madd_options(o);
-  detail::madd_state state(detail::regions_of(g), o);
+  detail::madd_state state(detail::initial_regions(g), o);
   const double global_h = detail::global_refinement_length(state, o);
   const detail::madd_split_options so = detail::split_options_for(o);
   decomposition_statistics st;

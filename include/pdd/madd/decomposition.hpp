@@ -17,10 +17,15 @@ struct edge_tag {
   kind type = kind::external;
   /// external: index of the input segment the edge is part of; interface: the interface id.
   index_t id = no_index;
-  /// external: the input segment's boundary marker; interface: unused (0).
+  /// external, and an interface on an input segment (on_segment): the segment's boundary
+  /// marker; a separator's interface edge: unused (0).
   int marker = 0;
   /// interface: the subdomain on the other side; external: no_index.
   index_t neighbour = no_index;
+  /// interface: it lies on an input segment between two faces of a general PSLG (an internal
+  /// constraint, see pdd::decompose) rather than on a separator; the merged mesh keeps it as a
+  /// segment with `marker`.
+  bool on_segment = false;
 };
 
 /// One subdomain: loops[0] is the outer boundary (counter-clockwise), loops[1..] the holes
@@ -31,7 +36,8 @@ struct subdomain {
   double area = 0.0;
 };
 
-/// An interface: the polyline shared by two subdomains (a < b), as vertex ids in the pool.
+/// An interface: the polyline shared by two subdomains (a < b), as vertex ids in the pool (a
+/// separator, or an internal constraint of a general PSLG).
 struct interface_curve {
   index_t a = no_index;
   index_t b = no_index;

@@ -48,8 +48,11 @@ inline std::size_t add_loop_vertices(const decomposition& d, const subdomain& sd
 /// a vertex repeated in the loops is added once), then, per loop edge a -> b, the points
 /// `on_interface(edge, a, b, g)` appends (in the order a -> b; it returns the path edge id, or
 /// no_index to add none) and the segments a -> points -> b. External edges carry their tag's
-/// marker, interface edges `interface_mark` (pdd::interface_marker). For every
-/// segment, segment_path_edge receives the id on_interface returned (no_index: external).
+/// marker, interface edges `interface_mark` (pdd::interface_marker), except that an interface
+/// on an input segment (edge_tag::on_segment) carries the segment's marker on the side of the
+/// smaller subdomain id, so that the merged mesh keeps the segment once, and the points added on
+/// it carry that marker on both sides. For every segment,
+/// segment_path_edge receives the id on_interface returned (no_index: external).
 /// Complexity: linear in the output (expected).
 template <class OnInterface>
 void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterface&& on_interface,
@@ -71,13 +74,17 @@ void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterfac
       const auto first = static_cast<index_t>(g.vertices.size());
       const index_t e = on_interface(edge, a, b, g);
       const auto last = static_cast<index_t>(g.vertices.size());
+      const int mark = tag.on_segment && s < tag.neighbour ? tag.marker : interface_mark;
+      if (tag.on_segment) // points on an input segment carry its marker, as in Triangle
+        for (index_t q = first; q < last; ++q)
+          g.vertex_markers[q] = tag.marker;
       index_t prev = local[a];
       for (index_t q = first; q < last; ++q) {
-        g.add_segment(prev, q, interface_mark);
+        g.add_segment(prev, q, mark);
         segment_path_edge.push_back(e);
         prev = q;
       }
-      g.add_segment(prev, local[b], interface_mark);
+      g.add_segment(prev, local[b], mark);
       segment_path_edge.push_back(e);
     }
   }

@@ -224,26 +224,33 @@ inline std::vector<std::vector<id_loop>> numbered_loops(const std::vector<madd_r
 /// An undirected edge by its vertex ids (smaller first), or a pair of subdomains.
 using index_pair = std::pair<index_t, index_t>;
 
-/// Per pair of subdomains (smaller index first): the interface edges they share.
-/// \throws internal_error if an interface edge is not shared by exactly two subdomains.
+/// Per pair of subdomains (smaller index first): the interface edges they share: the
+/// separator edges, and the external edges two subdomains share (on an internal constraint
+/// of a general PSLG, between two of its faces).
+/// \throws internal_error if a separator edge is not shared by exactly two subdomains.
 inline std::map<index_pair, std::vector<index_pair>>
 shared_interface_edges(const std::vector<std::vector<id_loop>>& subs) {
   struct interface_edge {
-    index_t u, w, s, l, i; // min id, max id, subdomain, loop, edge
+    index_t u, w, s; // min id, max id, subdomain
+    bool external;
   };
-  std::vector<interface_edge> ie;
+  std::vector<interface_edge> all;
   for (index_t s = 0; s < subs.size(); ++s)
-    for (index_t l = 0; l < subs[s].size(); ++l) {
-      const auto& tl = subs[s][l];
+    for (const id_loop& tl : subs[s])
       for (index_t i = 0; i < tl.v.size(); ++i) {
-        if (tl.t[i].external) continue;
         const index_t a = tl.v[i], b = tl.v[(i + 1) % tl.v.size()];
-        ie.push_back({std::min(a, b), std::max(a, b), s, l, i});
+        all.push_back({std::min(a, b), std::max(a, b), s, tl.t[i].external});
       }
-    }
-  std::sort(ie.begin(), ie.end(), [](const interface_edge& x, const interface_edge& y) {
+  std::sort(all.begin(), all.end(), [](const interface_edge& x, const interface_edge& y) {
     return std::tie(x.u, x.w, x.s) < std::tie(y.u, y.w, y.s);
   });
+  std::vector<interface_edge> ie; // separator edges, and external edges of two subdomains
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const bool shared =
+        (k > 0 && all[k - 1].u == all[k].u && all[k - 1].w == all[k].w) ||
+        (k + 1 < all.size() && all[k + 1].u == all[k].u && all[k + 1].w == all[k].w);
+    if (!all[k].external || shared) ie.push_back(all[k]);
+  }
   if (ie.size() % 2 != 0) throw internal_error("MADD: an interface edge has no neighbour");
   std::map<index_pair, std::vector<index_pair>> pair_edges;
   for (std::size_t k = 0; k < ie.size(); k += 2) {
@@ -305,17 +312,21 @@ subdomain_edge_tags(const id_loop& tl, index_t s, const decomposition& d,
   std::vector<edge_tag> tags;
   for (index_t i = 0; i < tl.v.size(); ++i) {
     const madd_edge_tag& t = tl.t[i];
+    const index_t a = tl.v[i], b = tl.v[(i + 1) % tl.v.size()];
+    const auto it = edge_interface.find({std::min(a, b), std::max(a, b)});
     edge_tag et;
-    if (t.external) {
+    if (it == edge_interface.end()) {
+      PDD_ASSERT(t.external);
       et.type = edge_tag::kind::external;
       et.id = t.segment;
       et.marker = t.marker;
     } else {
-      const index_t a = tl.v[i], b = tl.v[(i + 1) % tl.v.size()];
       et.type = edge_tag::kind::interface;
-      et.id = edge_interface.at({std::min(a, b), std::max(a, b)});
+      et.id = it->second;
       const interface_curve& c = d.interfaces[et.id];
       et.neighbour = c.a == s ? c.b : c.a;
+      et.on_segment = t.external;
+      et.marker = t.external ? t.marker : 0;
     }
     tags.push_back(et);
   }

@@ -63,9 +63,10 @@ struct madd_state {
       : by_area(std::isfinite(o.max_subdomain_area)), by_policy(bool(o.split_policy)) {
     if (regions.empty()) throw decomposition_error("MADD: the PSLG bounds no domain");
     if (!by_area && o.subdomains < regions.size())
-      throw decomposition_error("MADD: the domain has " + std::to_string(regions.size()) +
-                                " connected components, more than the " +
-                                std::to_string(o.subdomains) + " subdomains asked for");
+      throw decomposition_error(
+          "MADD: the domain has " + std::to_string(regions.size()) +
+          " connected components (faces, for a general PSLG), more than the " +
+          std::to_string(o.subdomains) + " subdomains asked for");
     for (auto& r : regions)
       leaves.push_back({std::move(r), false, {}});
   }

@@ -42,16 +42,14 @@ inline std::string path_name(const generate_statistics& st, bool geometric) {
 
 /// The plan's reason for one subdomain on a domain that is not one of closed loops.
 inline constexpr const char* general_domain_reason =
-    "the domain is not one of closed loops (internal or dangling segments, isolated vertices, "
-    "touching loops or internal boundaries): MADD and the decoupling path need closed loops, "
-    "the kernel meshes it whole";
+    "one subdomain: the domain is not one of closed loops (internal or dangling segments, "
+    "isolated vertices, touching loops or internal boundaries), the kernel meshes it whole";
 
-/// The error for options.subdomains = n > 1 on a domain that is not one of closed loops.
-inline std::string general_domain_error(std::size_t n) {
-  return "subdomains = " + std::to_string(n) +
-         " needs a domain of closed loops (each vertex on exactly two segments, a hole point in "
-         "every hole); this one has internal or dangling segments, isolated vertices, touching "
-         "loops or internal boundaries: use subdomains = 1, or 0 (automatic) for one subdomain";
+/// The error for options.subdomains = n > 1 on a domain that is not one of closed loops and
+/// cannot be decoupled (`why`: detail::face_regions's refusal).
+inline std::string general_domain_error(std::size_t n, const std::string& why) {
+  return "subdomains = " + std::to_string(n) + " cannot decouple this domain: " + why +
+         "; use subdomains = 1, or 0 (automatic) for one subdomain";
 }
 
 /// The plan's reason for falling back to N = 1 on too many split points.

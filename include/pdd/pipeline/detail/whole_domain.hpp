@@ -1,7 +1,7 @@
 /// \file whole_domain.hpp
-/// The pipeline's one-subdomain path: a domain that is not one of closed loops (Triangle's
-/// rule, meshed whole), and the kernel on the whole domain with its small input angles
-/// shielded (pipeline::mesh_whole).
+/// The pipeline's plan for a domain that is not one of closed loops (Triangle's rule; meshed
+/// whole, or decoupled from its faces), and the kernel on the whole domain with its small input
+/// angles shielded (pipeline::mesh_whole).
 #pragma once
 
 #include <pdd/concepts/delaunay_mesher.hpp>
@@ -9,24 +9,62 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/madd/face_decoupling.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/shielding/apply_shields.hpp>
 #include <pdd/shielding/shield.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <utility>
 
 namespace pdd::detail {
 
-/// A domain that is not one of closed loops: Triangle's rule for the kernel, one subdomain.
-/// \throws pdd::decomposition_error for options.subdomains > 1.
-inline void plan_general_domain(pslg& domain, generate_options& options) {
+/// What the plan knows of a domain that is not one of closed loops.
+struct general_domain_plan {
+  std::size_t faces = 0; ///< faces of the domain (each at least one subdomain when decoupled)
+  std::string refusal;   ///< why it cannot be decoupled (pdd::face_decoupling); empty: it can
+};
+
+/// A domain that is not one of closed loops: Triangle's rule, and (unless one subdomain is
+/// asked for) its faces, which MADD starts from.
+/// \throws pdd::decomposition_error for options.subdomains > 1 on a domain that cannot be
+/// decoupled (pdd::face_decoupling: a dangling segment, an isolated vertex, a face touching
+/// itself, a constraint corner < 60 deg; the message names it).
+inline general_domain_plan plan_general_domain(pslg& domain, const generate_options& options) {
   domain.rule = domain_rule::triangle;
-  if (options.subdomains > 1) throw decomposition_error(general_domain_error(options.subdomains));
-  options.subdomains = 1;
+  general_domain_plan p;
+  if (options.subdomains == 1) return p;
+  face_decoupling_report f = face_decoupling(domain);
+  p.faces = f.faces;
+  p.refusal = std::move(f.refusal);
+  if (options.subdomains > 1 && !p.refusal.empty())
+    throw decomposition_error(general_domain_error(options.subdomains, p.refusal));
+  return p;
+}
+
+/// N for a domain that is not one of closed loops, from the N `planned` as for closed loops:
+/// 1 when one is planned or the domain cannot be decoupled, else at least one subdomain per
+/// face (MADD splits faces, it never merges two: the segment between them would lie inside a
+/// subdomain). `reason` receives the plan's reason, which says when N was raised.
+inline std::size_t general_domain_subdomains(std::size_t planned, const general_domain_plan& p,
+                                             std::string& reason) {
+  if (planned <= 1 || !p.refusal.empty()) {
+    reason = planned <= 1 ? std::string(general_domain_reason)
+                          : "one subdomain: the domain is not one of closed loops and cannot be "
+                            "decoupled: " +
+                                p.refusal;
+    return 1;
+  }
+  reason = "the domain is not one of closed loops: MADD from its " + std::to_string(p.faces) +
+           " faces, the segments between faces are interfaces (the uniform path)";
+  if (planned < p.faces)
+    reason += "; N raised from " + std::to_string(planned) + " to " + std::to_string(p.faces) +
+              ", one subdomain per face at least";
+  return std::max(planned, p.faces);
 }
 
 /// The kernel on the whole domain, markers 0: a general domain as it is; a domain of closed
