@@ -72,12 +72,13 @@ class pipeline {
 public:
   /// Checks the options (check_generate_options), validates the domain (pdd::validate; one that
   /// is not of closed loops, pdd::has_closed_loops, is read by Triangle's rule and takes the
-  /// uniform path from its faces, detail::plan_general_domain, or is meshed whole when it cannot
-  /// be decoupled), estimates the mesh size (pdd::estimate_mesh_size: the area bound, the sizing
-  /// field and the local feature size; size_estimate()) and plans N from it (automatic_subdomains
-  /// when options.subdomains == 0 and some area bound is given; N = 1 without any). \throws
-  /// pdd::decomposition_error for contradicting options (also subdomains > 1 on a domain not of
-  /// closed loops that cannot be decoupled); pdd::geometry_error for an invalid domain.
+  /// uniform or graded path from its faces, detail::plan_general_domain, or is meshed whole when it
+  /// cannot be decoupled), estimates the mesh size (pdd::estimate_mesh_size: the area bound, the
+  /// sizing field and the local feature size; size_estimate()) and plans N from it
+  /// (automatic_subdomains when options.subdomains == 0 and some area bound is given; N = 1 without
+  /// any). \throws pdd::decomposition_error for contradicting options (also subdomains > 1 on a
+  /// domain not of closed loops that cannot be decoupled); pdd::geometry_error for an invalid
+  /// domain.
   pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
       : domain_(std::move(domain)), options_(std::move(options)), mesher_(std::move(mesher)),
         partitioner_(std::move(partitioner)),
@@ -100,15 +101,14 @@ public:
                                                          options_.planning)
                                   : 1;
     stats_.general_domain = general_;
-    if (general_) { // the uniform path from the faces, or whole
+    if (general_) // from the faces, or whole
       stats_.subdomains =
           detail::general_domain_subdomains(stats_.subdomains, general_plan, stats_.plan_reason);
-      return;
-    }
     // the graded method (Algorithm 7.1 + graded path with Theorem 26's shields) where k is
     // neither scaled nor overridden
     graded_plan_ = options_.sizing && stats_.subdomains > 1 &&
                    !(options_.decoupling.k_override > 0.0) && options_.decoupling.k_scale == 1.0;
+    if (general_) return; // the geometric path measures lfs_min on closed loops
     geometric_plan_ = detail::choose_geometric_path(
         domain_, options_, std::min(options_.criteria.max_area, sizing_min_), stats_);
   }
@@ -176,7 +176,7 @@ public:
       // Algorithm 8.2: shield the small angles of every subdomain (graded: Theorem 26's l_i per
       // subdomain; uniform: one bound); k then comes from the shielded subdomains D_i'.
       std::vector<subdomain_shields> shields;
-      if (!(options_.sizing && !general_ && try_graded_path(shields))) shields = decouple_uniform();
+      if (!(options_.sizing && try_graded_path(shields))) shields = decouple_uniform();
       decoupled_decomposition_.shields.resize(shields.size());
       for (std::size_t s = 0; s < shields.size(); ++s)
         decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);

@@ -60,7 +60,7 @@ inline std::size_t general_domain_subdomains(std::size_t planned, const general_
     return 1;
   }
   reason = "the domain is not one of closed loops: MADD from its " + std::to_string(p.faces) +
-           " faces, the segments between faces are interfaces (the uniform path)";
+           " faces, the segments between faces are interfaces";
   if (planned < p.faces)
     reason += "; N raised from " + std::to_string(planned) + " to " + std::to_string(p.faces) +
               ", one subdomain per face at least";
