@@ -1,10 +1,13 @@
-// The MPI backend end to end: `mpiexec -n P pdd-mesh-mpi` against the threaded
-// `pdd-mesh --output-per-subdomain` (every file bitwise equal, and pdd-verify passes on it), the
-// statistics, and failures (a throwing kernel through the library API, bad input): every rank
-// ends, rank 0 reports once, nothing is left in the output folder. ctest sets
-// OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) (CI runs as root); PDD_MPIEXEC_FLAGS holds --oversubscribe for
-// Open MPI (P > cores here).
+// The MPI backend end to end (closed loops and a general PSLG): `mpiexec -n P pdd-mesh-mpi`
+// against the threaded `pdd-mesh --output-per-subdomain` (every file bitwise equal, and
+// pdd-verify passes on it), the statistics, and failures (a throwing kernel through the library
+// API, bad input): every rank ends, rank 0 reports once, nothing is left in the output folder.
+// ctest sets OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) (CI runs as root); PDD_MPIEXEC_FLAGS holds
+// --oversubscribe for Open MPI (P > cores here).
+#include "general_domains.hpp"
 #include "test_files.hpp"
+
+#include <pdd/io/poly.hpp>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -127,6 +130,16 @@ TEST(MpiPipe, EverySubdomainFileBitwiseAsThreaded) {
 TEST(MpiNative, EverySubdomainFileBitwiseAsThreaded) {
   expect_bitwise_as_threaded({data / "key.poly", "2e-3", 16, "native"}, "key_native");
   expect_bitwise_as_threaded({data / "pipe.poly", "2e-3", 64, "native"}, "pipe_native");
+}
+
+// A domain that is not one of closed loops (issue 13): the layered domain decoupled from its
+// five faces, the segments between them interfaces.
+TEST(MpiGeneral, EverySubdomainFileBitwiseAsThreaded) {
+  const fs::path poly = pdd::test::temp_path("mpi_layered.poly");
+  pdd::pslg layered = pdd::test::layered_domain();
+  layered.regions.clear(); // the uniform path: N = 16 exactly
+  pdd::write_poly(poly, layered);
+  expect_bitwise_as_threaded({poly, "2e-3", 16}, "layered");
 }
 
 // Texas: input angles down to 7.29 deg, shielded (dissertation ch. 8).

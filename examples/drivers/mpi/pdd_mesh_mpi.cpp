@@ -94,7 +94,8 @@ template <class M>
 void build_path(const mesh_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
   r.domain = pdd::read_poly(o.input);
-  static_cast<void>(pdd::analyze(r.domain)); // validates, throws geometry_error
+  // validates (throws geometry_error); not closed loops: Triangle's rule, as pdd-mesh reads it
+  if (!pdd::analyze(r.domain).closed_loops) r.domain.rule = pdd::domain_rule::triangle;
   if (!o.quiet && r.rank == 0 && has_region_attributes(r.domain))
     std::printf("pdd-mesh-mpi: note: the regional attributes of %s are not written with the "
                 "pieces (pdd-mesh -A writes them)\n",
