@@ -22,6 +22,10 @@
 // pdd-mesh, it then refuses --min-separator-angle below 60 (the decoupling path and the
 // shields need separators at >= 60 deg); a plain decomposition accepts any angle in [1, 89].
 //
+// A domain that is not one of closed loops (internal or dangling segments, isolated vertices)
+// is read by Triangle's rule and decomposed from its faces, as pdd-mesh does; its dangling
+// segments and isolated vertices are inner constraints of the subdomains that hold them.
+//
 // -o writes the decomposition in pdd's text format (include/pdd/io/decomposition_io.hpp),
 // which pdd::read_decomposition reads back. Exit codes: 0 ok, 1 bad input or the domain cannot
 // be decomposed, 2 usage, 3 the decomposition failed its own check, 4 internal error.
@@ -162,6 +166,8 @@ int run(cli_options o) {
   decompose_run r;
   r.domain = pdd::read_poly(o.input);
   r.props = pdd::analyze(r.domain); // validates
+  // not one of closed loops: Triangle's rule, as pdd-mesh reads it (MADD starts from its faces)
+  if (!r.props.closed_loops) r.domain.rule = pdd::domain_rule::triangle;
   o.madd.smoothing = !o.no_smoothing;
   r.graded = pdd::drivers::set_split_policy(o.graded, r.domain, o.madd);
   if (!o.quiet && pdd::stderr_is_terminal())

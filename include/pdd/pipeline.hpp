@@ -14,6 +14,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
+#include <pdd/decoupling/decoupling_parameter.hpp>
 #include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
@@ -153,12 +154,16 @@ public:
       mo.subdomains = stats_.subdomains;
       mo.max_subdomain_area = std::numeric_limits<double>::infinity();
       mo.threads = options_.threads;
-      if (graded_plan_)
-        decompose_graded(mo);
-      else
-        decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
-      stats_.subdomains = decomposition_.subdomains.size();
-      if (geometric_plan_) adopt_geometric(mo);
+      try {
+        run_madd(mo);
+      } catch (const decomposition_error& e) {
+        // automatic N on a general domain whose faces MADD cannot split (separators kept
+        // away from its dangling segments and isolated vertices): one subdomain
+        if (!general_ || options_.subdomains != 0) throw;
+        fall_back_to_whole_domain(std::string("one subdomain: MADD cannot split the faces of "
+                                              "this domain (") +
+                                  e.what() + ")");
+      }
     }
     stats_.timings.decompose = seconds_since(t0);
     decomposed_ = true;
@@ -352,6 +357,36 @@ private:
 
   /// The criteria the decoupling path and the shields are built for: max_area lowered to the
   /// sizing field's minimum over the domain (the interim rule, see generate_options::sizing).
+  /// MADD (graded or not, geometric adoption) with mo; on a general domain the separators keep
+  /// 4 k_area from its dangling segments and isolated vertices (madd_options::feature_clearance),
+  /// or, when N cannot be reached so, the splits' boundary spacing h.
+  void run_madd(madd_options mo) {
+    if (general_ && mo.feature_clearance == 0.0) {
+      const double term = decoupling_area_term(decoupling_criteria());
+      if (std::isfinite(term)) {
+        mo.feature_clearance = 4.0 * term;
+        try {
+          madd_with(mo);
+          return;
+        } catch (const decomposition_error&) {
+          mo.feature_clearance = 0.0;
+          stats_.decomposition = {};
+        }
+      }
+    }
+    madd_with(mo);
+  }
+
+  /// One MADD run with mo: graded (Algorithm 7.1) or not, then the geometric path's adoption.
+  void madd_with(const madd_options& mo) {
+    if (graded_plan_)
+      decompose_graded(mo);
+    else
+      decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
+    stats_.subdomains = decomposition_.subdomains.size();
+    if (geometric_plan_) adopt_geometric(mo);
+  }
+
   mesh_criteria decoupling_criteria() const {
     mesh_criteria c = options_.criteria;
     c.max_area = std::min(c.max_area, sizing_min_);

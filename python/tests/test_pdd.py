@@ -228,8 +228,7 @@ def test_readme_shows_the_example_script():
 
 def test_general_pslg_internal_dangling_and_isolated():
     # issue 13: an internal constraint (the diagonal), a dangling segment and an isolated vertex,
-    # meshed whole by Triangle's rule, with a uniform bound and with a sizing callable; N > 1 is
-    # refused naming the dangling segment
+    # meshed whole by Triangle's rule, with a uniform bound and with a sizing callable
     sq = square()
     v = np.vstack([sq["vertices"], [[0.1, 0.5], [0.3, 0.8], [0.8, 0.3]]])
     s = np.vstack([sq["segments"], [[0, 2], [4, 5]]])
@@ -242,5 +241,15 @@ def test_general_pslg_internal_dangling_and_isolated():
         assert 6 in set(t.ravel().tolist())  # the isolated vertex is a mesh vertex
         # the dangling segment's ends are ends of mesh edges on segments (its subsegments)
         assert {4, 5} <= set(r["segments"].ravel().tolist())
-    with pytest.raises(RuntimeError, match="cannot decouple this domain: segment 5 .*dangling"):
+    # the diagonal makes 45 deg corners between faces: N > 1 is refused naming the corner
+    with pytest.raises(RuntimeError, match="cannot decouple this domain: the corner of 45.* deg"):
         pdd.mesh(v, s, max_area=0.005, subdomains=4)
+    # without it, the dangling segment and the isolated vertex lie inside subdomains
+    r = pdd.mesh(v, np.vstack([sq["segments"], [[4, 5]]]), max_area=0.005, subdomains=4)
+    assert r["statistics"]["subdomains"] == 4
+    assert r["statistics"]["interface_splits"] == 0
+    assert abs(areas(r["vertices"], r["triangles"]).sum() - 1.0) < 1e-12
+    # merged from subdomains, the vertices are renumbered: look them up by coordinates
+    at = {tuple(p): i for i, p in enumerate(r["vertices"].tolist())}
+    assert at[tuple(v[6])] in set(r["triangles"].ravel().tolist())
+    assert {at[tuple(v[4])], at[tuple(v[5])]} <= set(r["segments"].ravel().tolist())

@@ -225,6 +225,36 @@ inline pslg random_map(std::uint32_t seed, int n = 6) {
   return g;
 }
 
+/// random_map(seed, n) with up to `features` dangling segments (length 0.2 to 0.6, random
+/// direction) and isolated vertices (every third) at random points of [0.2, n - 0.2]^2, each
+/// kept when the PSLG stays valid (no crossing, touching or duplicate): the features inside
+/// faces that the decoupled pipeline keeps inside subdomains. Deterministic for a seed.
+inline pslg random_map_with_features(std::uint32_t seed, int n = 6, int features = 8) {
+  pslg g = random_map(seed, n);
+  std::mt19937 rng(seed * 7919u + 1u);
+  std::uniform_real_distribution<double> at(0.2, n - 0.2), length(0.2, 0.6),
+      turn(0.0, 2.0 * std::numbers::pi);
+  for (int t = 0; t < features; ++t) {
+    pslg trial = g;
+    const point p{at(rng), at(rng)};
+    const double a = turn(rng), l = length(rng);
+    const point q{p.x + l * std::cos(a), p.y + l * std::sin(a)};
+    if (t % 3 == 2)
+      trial.add_vertex(p);
+    else if (q.x > 0.0 && q.y > 0.0 && q.x < n && q.y < n)
+      trial.add_segment(trial.add_vertex(p), trial.add_vertex(q));
+    else
+      continue;
+    try {
+      validate(trial, {.check_domain = false});
+    } catch (const geometry_error&) {
+      continue;
+    }
+    g = std::move(trial);
+  }
+  return g;
+}
+
 /// An arrangement of random_arrangement(7) before its 10 deg filter, by Triangle's rule: two
 /// segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square; the CGAL
 /// kernel refuses it with a meshing_error (the rounded split point falls beyond the other

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "general_domains.hpp"
 #include "test_files.hpp"
 #include "test_support.hpp"
 
@@ -199,6 +200,39 @@ TEST(PddDecompose, WritesReadableDecompositionAndStats) {
             std::string((std::istreambuf_iterator<char>(fb)), {}));
 }
 
+TEST(PddDecompose, GeneralDomainWithInnerConstraints) {
+  // the layered domain with a dangling crack, an isolated well and an internal boundary: read
+  // by Triangle's rule, decomposed from its faces; the segments between faces are interfaces
+  // on segments ('s' edges) and the crack and the well inner constraints, read back bit for bit
+  const auto poly = pdd::test::temp_path("combined_d.poly"), file = pdd::test::temp_path("c.pdd");
+  pdd::write_poly(poly, pdd::test::combined_domain());
+  const auto r = run(PDD_DECOMPOSE_EXE, poly.string() + " --subdomains 12 -q -o " + file.string() +
+                                            " --svg " + pdd::test::temp_path("c.svg").string());
+  ASSERT_EQ(r.code, 0) << r.output;
+  const pdd::decomposition d = pdd::read_decomposition(file);
+  EXPECT_EQ(d.subdomains.size(), 12u);
+  pdd::pslg g = pdd::read_poly(poly);
+  g.rule = pdd::domain_rule::triangle;
+  const auto rep = pdd::validate_decomposition(d, g);
+  EXPECT_TRUE(rep.ok()) << rep.summary();
+  std::size_t inner_segments = 0, inner_vertices = 0, on_segment = 0;
+  for (const pdd::subdomain& sd : d.subdomains) {
+    for (const pdd::inner_constraint& c : sd.inner)
+      ++(c.segment == pdd::no_index ? inner_vertices : inner_segments);
+    for (const auto& tags : sd.tags)
+      for (const pdd::edge_tag& t : tags)
+        on_segment += t.on_segment;
+  }
+  EXPECT_EQ(inner_segments, 1u);
+  EXPECT_EQ(inner_vertices, 1u);
+  EXPECT_GT(on_segment, 0u);
+  const auto again = pdd::test::temp_path("c2.pdd");
+  pdd::write_decomposition(again, d);
+  std::ifstream fa(file), fb(again);
+  EXPECT_EQ(std::string((std::istreambuf_iterator<char>(fa)), {}),
+            std::string((std::istreambuf_iterator<char>(fb)), {}));
+}
+
 TEST(PddDecompose, MaxAreaPlansThePathPddMeshBuilds) {
   // --max-area: the shields and the decoupling path of a pdd-mesh run, without meshing
   const auto star = pdd::test::write_temp_file(
@@ -257,7 +291,13 @@ TEST(DecompositionFormat, MalformedFilesNameTheLine) {
       EXPECT_NE(std::string(e.what()).find(where), std::string::npos) << e.what();
     }
   };
-  check("pdd-decomposition 2\n", "bad.pdd:1:");
+  check("pdd-decomposition 3\n", "bad.pdd:1:");
+  check("pdd-decomposition 2\nvertices 3\n0 0 0\n1 0 0\n0 1 0\nsubdomains 1\nsubdomain 0.5 1 1\n"
+        "loop 3\n0 e 0 1\n1 e 1 1\n2 e 2 1\nsegment 0 0 5 1\n",
+        "bad.pdd:12:"); // an inner segment needs two vertices
+  check("pdd-decomposition 2\nvertices 3\n0 0 0\n1 0 0\n0 1 0\nsubdomains 1\nsubdomain 0.5 1\n"
+        "loop 3\n0 s 0 0\n1 e 1 1\n2 e 2 1\n",
+        "bad.pdd:9:"); // an interface on a segment needs its marker
   check("pdd-decomposition 1\nvertices 3\n0 0 0\n1 0 0\n", "bad.pdd:5:");
   check("pdd-decomposition 1\nvertices 1\n0 x 0\n", "bad.pdd:3:");
   check("pdd-decomposition 1\nvertices 3\n0 0 0\n1 0 0\n0 1 0\nsubdomains 1\nsubdomain 0.5 1\n"

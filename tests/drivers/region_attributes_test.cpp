@@ -151,12 +151,24 @@ TEST(PddMeshRegionAttributes, GeneralDomainDecoupledFromItsFaces) {
   EXPECT_EQ(j["path"], "graded");
   EXPECT_EQ(j["conforming"], true);
   EXPECT_EQ(j["region_attributes"].size(), 5u) << j.dump();
-  // a dangling crack and an isolated well: N > 1 is refused naming the segment, exit 1
+  // a dangling crack and an isolated well lie inside subdomains: decoupled, verified
   const auto combined = pdd::test::temp_path("combined.poly");
   pdd::write_poly(combined, pdd::test::combined_domain(0.05));
-  const auto no = run_mesh(combined.string() + " --max-area 0.05 --subdomains 4 -o " +
-                           pdd::test::temp_path("combined_out.node").string());
+  const auto yes =
+      run_mesh(combined.string() + " --max-area 0.05 --subdomains 8 -A --verify -o " +
+               pdd::test::temp_path("combined_out.node").string() + " --stats " + stats.string());
+  ASSERT_EQ(yes.code, 0) << yes.output;
+  EXPECT_NE(yes.output.find("verification passed"), std::string::npos) << yes.output;
+  std::ifstream in2(stats);
+  const nlohmann::json j2 = nlohmann::json::parse(in2);
+  EXPECT_GE(j2["subdomains"], 8);
+  EXPECT_EQ(j2["interface_splits"], 0);
+  // rings touching at a vertex: N > 1 is refused naming the vertex, exit 1, no file
+  const auto pinched = pdd::test::temp_path("pinched.poly");
+  pdd::write_poly(pinched, pdd::test::pinched_rings());
+  const auto no = run_mesh(pinched.string() + " --max-area 0.05 --subdomains 4 -o " +
+                           pdd::test::temp_path("pinched_out.node").string());
   EXPECT_EQ(no.code, 1) << no.output;
-  EXPECT_NE(no.output.find("dangling segment"), std::string::npos) << no.output;
-  EXPECT_FALSE(fs::exists(pdd::test::temp_path("combined_out.node")));
+  EXPECT_NE(no.output.find("visited twice"), std::string::npos) << no.output;
+  EXPECT_FALSE(fs::exists(pdd::test::temp_path("pinched_out.node")));
 }

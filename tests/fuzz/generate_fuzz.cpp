@@ -16,11 +16,12 @@
 //   vertex in the domain a mesh vertex, the area of the faces; exempt from the angle bound are
 //   the cluster-exempt triangles at angles < 60 deg between segments
 //   (pdd::find_cluster_exempt_triangles) only. N = 2 decouples it from its faces (N raised to
-//   the number of faces; the segments between faces are interfaces) and is verified the same
+//   the number of faces; the segments between faces are interfaces; dangling segments and
+//   isolated vertices inside subdomains, no separator near them) and is verified the same
 //   way (a shielded corner has its vertices on the two segments of a small angle, so the
-//   cluster exemption covers it), or refuses it with a pdd::decomposition_error (a dangling
-//   segment, an isolated vertex, a face that touches itself, a corner < 60 deg on a segment
-//   between faces); a meshing_error or any other exception there is a finding.
+//   cluster exemption covers it), or refuses it with a pdd::decomposition_error (a face that
+//   touches itself, a corner < 60 deg on a segment between faces or at a segment inside a
+//   face); a meshing_error or any other exception there is a finding.
 //
 // Refusals of bad input are passes: pdd::input_error (parser), pdd::geometry_error (validate,
 // shields), pdd::decomposition_error (MADD cannot split the domain as asked), pdd::limit_error,

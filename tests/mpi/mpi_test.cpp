@@ -140,6 +140,12 @@ TEST(MpiGeneral, EverySubdomainFileBitwiseAsThreaded) {
   layered.regions.clear(); // the uniform path: N = 16 exactly
   pdd::write_poly(poly, layered);
   expect_bitwise_as_threaded({poly, "2e-3", 16}, "layered");
+  // with a dangling crack, an isolated well and an internal boundary inside its faces
+  const fs::path combined_poly = pdd::test::temp_path("mpi_combined.poly");
+  pdd::pslg combined = pdd::test::combined_domain();
+  combined.regions.clear();
+  pdd::write_poly(combined_poly, combined);
+  expect_bitwise_as_threaded({combined_poly, "2e-3", 16}, "combined");
 }
 
 // Texas: input angles down to 7.29 deg, shielded (dissertation ch. 8).

@@ -3,16 +3,22 @@
 /// can be read back by a later step. Coordinates are written in the shortest form that reads
 /// back bit for bit. The format, line by line (`#` starts a comment, blank lines are ignored):
 ///
-///     pdd-decomposition 1
+///     pdd-decomposition 2
 ///     vertices <n>
 ///     <x> <y> <marker>                                   (n lines, vertex ids 0..n-1)
 ///     subdomains <m>
-///     subdomain <area> <number of loops>                 (m blocks, subdomain ids 0..m-1)
+///     subdomain <area> <number of loops> <inner>         (m blocks, subdomain ids 0..m-1)
 ///     loop <number of edges>                             (first loop: outer, CCW; then holes, CW)
 ///     <vertex> e <segment id> <marker>                   (edge from <vertex> to the next one:
-///     <vertex> i <interface id> <neighbour subdomain>     external or interface)
-///     interfaces <k>
-///     <a> <b> <number of vertices> <v0> <v1> ...         (k lines, interface ids 0..k-1)
+///     <vertex> i <interface id> <neighbour subdomain>     external, interface, or an interface
+///     <vertex> s <interface id> <neighbour> <marker>      on an input segment,
+///     edge_tag::on_segment) segment <a> <b> <segment id> <marker>              (<inner> lines
+///     after the loops: the vertex <a>                                          subdomain's inner
+///     constraints) interfaces <k> <a> <b> <number of vertices> <v0> <v1> ...         (k lines,
+///     interface ids 0..k-1)
+///
+/// Version 1 (written before general PSLGs were decoupled: no `s` edges, no inner constraints,
+/// `subdomain <area> <loops>`) is read as well.
 #pragma once
 
 #include <pdd/errors.hpp>
@@ -34,7 +40,7 @@ namespace pdd {
 /// Writes a decomposition in pdd's text format (atomically). \throws pdd::error on I/O failure.
 inline void write_decomposition(const std::filesystem::path& path, const decomposition& d) {
   write_file_atomically(path, [&](std::ostream& os) {
-    os << "# pdd decomposition: " << d.subdomains.size() << " subdomains\npdd-decomposition 1\n";
+    os << "# pdd decomposition: " << d.subdomains.size() << " subdomains\npdd-decomposition 2\n";
     os << "vertices " << d.vertices.size() << '\n';
     for (std::size_t i = 0; i < d.vertices.size(); ++i) {
       detail::put_double(os, d.vertices[i].x);
@@ -46,18 +52,17 @@ inline void write_decomposition(const std::filesystem::path& path, const decompo
     for (const subdomain& s : d.subdomains) {
       os << "subdomain ";
       detail::put_double(os, s.area);
-      os << ' ' << s.loops.size() << '\n';
+      os << ' ' << s.loops.size() << ' ' << s.inner.size() << '\n';
       for (std::size_t l = 0; l < s.loops.size(); ++l) {
         os << "loop " << s.loops[l].size() << '\n';
-        for (std::size_t i = 0; i < s.loops[l].size(); ++i) {
-          const edge_tag& t = s.tags[l][i];
-          os << s.loops[l][i];
-          if (t.type == edge_tag::kind::external)
-            os << " e " << t.id << ' ' << t.marker << '\n';
-          else
-            os << " i " << t.id << ' ' << t.neighbour << '\n';
-        }
+        for (std::size_t i = 0; i < s.loops[l].size(); ++i)
+          detail::put_decomposition_edge(os, s.loops[l][i], s.tags[l][i]);
       }
+      for (const inner_constraint& c : s.inner)
+        if (c.segment == no_index)
+          os << "vertex " << c.a << '\n';
+        else
+          os << "segment " << c.a << ' ' << c.b << ' ' << c.segment << ' ' << c.marker << '\n';
     }
     os << "interfaces " << d.interfaces.size() << '\n';
     for (const interface_curve& c : d.interfaces) {

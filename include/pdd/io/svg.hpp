@@ -117,8 +117,9 @@ inline void write_svg(const std::filesystem::path& path, const triangle_mesh& me
 }
 
 /// Writes an SVG picture of a decomposition (dissertation ch. 3-4), atomically: each subdomain
-/// filled with its own colour (holes left empty, even-odd rule), external edges coloured by
-/// their boundary marker and interface edges in black, each interface edge drawn once.
+/// filled with its own colour (holes left empty, even-odd rule), external edges and inner
+/// constraint segments coloured by their boundary marker and interface edges in black, each
+/// interface edge drawn once.
 /// \throws pdd::error naming the path when a loop refers to a missing vertex or its tags do
 ///   not match it, or when writing fails.
 /// Complexity: linear in the loop sizes. Thread-safety: reentrant.
@@ -158,6 +159,9 @@ inline void write_svg(const std::filesystem::path& path, const decomposition& d,
           else if (t.neighbour == no_index || s < t.neighbour)
             interfaces.emplace_back(a, b);
         }
+      for (const inner_constraint& ic : sd.inner)
+        if (ic.segment != no_index && ic.a < d.vertices.size() && ic.b < d.vertices.size())
+          external[ic.marker].emplace_back(d.vertices[ic.a], d.vertices[ic.b]);
     }
     detail::draw_marked_segments(c, external, options.segment_stroke_px);
     c.segments(interfaces, "#000000", options.segment_stroke_px);

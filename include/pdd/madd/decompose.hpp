@@ -59,11 +59,14 @@ inline std::vector<madd_region> initial_regions(const pslg& g) {
 /// A general PSLG (pdd::has_closed_loops false: internal constraints, loops nested without a
 /// hole point) starts from its faces (pdd::domain_faces by g.rule), each at least one
 /// subdomain: a segment between two faces is an interface of the result (edge_tag::on_segment)
-/// and gets the vertices of the separators that end on it from either side.
+/// and gets the vertices of the separators that end on it from either side. Its dangling
+/// segments, segments with one face on both sides and isolated vertices become inner
+/// constraints (pdd::inner_constraint) of the subdomain that holds them: no separator comes
+/// within the split's boundary spacing of them (madd/detail/features.hpp).
 /// \pre g is valid (validate()).
 /// \throws geometry_error as find_loops for bad input; decomposition_error for bad options, for
-/// a general PSLG with a dangling segment, an isolated vertex, a face that touches itself or a
-/// corner < 60 deg on an internal constraint (the message names it), or
+/// a general PSLG with a face that touches itself, a corner < 60 deg on an internal constraint
+/// or a segment inside a face at such an angle (pdd::face_decoupling; the message names it), or
 /// when the domain cannot be split as asked (a subdomain too thin or with too few junction
 /// triangles after max_refinement_levels: the message names the subdomain and the reason).
 /// Complexity: about O(sum over splits of |Z| log |Z|); N = 1024 on a pipe cross-section takes

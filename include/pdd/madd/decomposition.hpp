@@ -28,12 +28,24 @@ struct edge_tag {
   bool on_segment = false;
 };
 
+/// A constraint inside a subdomain of a general PSLG (pdd::decompose keeps every separator
+/// away from it, so the subdomain's kernel meshes it): a segment with one face of the domain
+/// on both sides (dangling, or joining two boundary points of that face), or an isolated
+/// vertex (b == a, segment == no_index). Its ends may lie on the subdomain's loops.
+struct inner_constraint {
+  index_t a = no_index, b = no_index; ///< pool vertex ids
+  index_t segment = no_index;         ///< the input segment; no_index for a vertex
+  int marker = 0;                     ///< the segment's marker
+  friend bool operator==(const inner_constraint&, const inner_constraint&) = default;
+};
+
 /// One subdomain: loops[0] is the outer boundary (counter-clockwise), loops[1..] the holes
 /// (clockwise). tags[l][i] describes the edge loops[l][i] -> loops[l][(i + 1) % size].
 struct subdomain {
   std::vector<std::vector<index_t>> loops;
   std::vector<std::vector<edge_tag>> tags;
   double area = 0.0;
+  std::vector<inner_constraint> inner; ///< general PSLGs only, in input segment order
 };
 
 /// An interface: the polyline shared by two subdomains (a < b), as vertex ids in the pool (a

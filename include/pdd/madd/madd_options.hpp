@@ -75,6 +75,14 @@ struct madd_options {
   /// fails while its priority stays positive ends pdd::decompose with a decomposition_error
   /// naming it, once nothing else can be split.
   madd_split_policy split_policy{};
+  /// General PSLGs: the least distance every separator keeps from the dangling segments and
+  /// isolated vertices inside a region (they stay inside one subdomain, see pdd::decompose);
+  /// the split's boundary spacing h is kept when larger. A region that no separator can split
+  /// so is left whole, like any region MADD cannot split (others are split in its place).
+  /// pdd::generate sets it to four times the decoupling path's area term, so that a separator
+  /// passing a feature does not lower lfs_min, and with it k, below what the area bound gives,
+  /// and decomposes again with h alone when N cannot be reached so. >= 0.
+  double feature_clearance = 0.0;
 };
 
 } // namespace pdd

@@ -44,6 +44,25 @@ inline std::size_t add_loop_vertices(const decomposition& d, const subdomain& sd
   return total;
 }
 
+/// Adds the inner constraints of sd (a general PSLG's dangling segments and isolated vertices
+/// inside it) to g after its loops: their vertices once (those on the loops are there
+/// already), their segments with the input marker (segment_path_edge: no_index).
+inline void add_inner_constraints(const decomposition& d, const subdomain& sd, pslg& g,
+                                  std::unordered_map<index_t, index_t>& local,
+                                  std::vector<index_t>& segment_path_edge) {
+  auto vertex = [&](index_t v) {
+    const auto [it, added] = local.emplace(v, static_cast<index_t>(g.vertices.size()));
+    if (added) g.add_vertex(d.vertices[v], v < d.vertex_markers.size() ? d.vertex_markers[v] : 0);
+    return it->second;
+  };
+  for (const inner_constraint& c : sd.inner) {
+    const index_t a = vertex(c.a), b = vertex(c.b);
+    if (c.segment == no_index) continue;
+    g.add_segment(a, b, c.marker);
+    segment_path_edge.push_back(no_index);
+  }
+}
+
 /// Builds subdomain s of d as a pslg into g: first every loop vertex once (in loop order;
 /// a vertex repeated in the loops is added once), then, per loop edge a -> b, the points
 /// `on_interface(edge, a, b, g)` appends (in the order a -> b; it returns the path edge id, or
@@ -52,7 +71,8 @@ inline std::size_t add_loop_vertices(const decomposition& d, const subdomain& sd
 /// on an input segment (edge_tag::on_segment) carries the segment's marker on the side of the
 /// smaller subdomain id, so that the merged mesh keeps the segment once, and the points added on
 /// it carry that marker on both sides. For every segment,
-/// segment_path_edge receives the id on_interface returned (no_index: external).
+/// segment_path_edge receives the id on_interface returned (no_index: external). The inner
+/// constraints come last (add_inner_constraints).
 /// Complexity: linear in the output (expected).
 template <class OnInterface>
 void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterface&& on_interface,
@@ -88,6 +108,7 @@ void build_subdomain_pslg(const decomposition& d, index_t s, pslg& g, OnInterfac
       segment_path_edge.push_back(e);
     }
   }
+  add_inner_constraints(d, sd, g, local, segment_path_edge);
 }
 
 /// Signed area of one loop of pool vertices (shoelace, pdd::detail::polygon_signed_area;

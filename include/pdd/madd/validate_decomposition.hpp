@@ -23,7 +23,8 @@ namespace pdd {
 /// (same marker) exactly once and the external edges cover every input segment; every
 /// interface edge is in exactly two subdomains, in opposite directions, with the same
 /// interface id and each other as neighbour, and lies on its interface curve; every interior
-/// angle of a subdomain at a vertex with an incident interface edge is >= Phi0 - tolerance.
+/// angle of a subdomain at a vertex with an incident interface edge is >= Phi0 - tolerance;
+/// every inner constraint (general PSLGs) is its input segment and touches no interface.
 /// Returns every problem found (up to max_problems), never throws for a bad decomposition.
 /// \throws geometry_error if g itself has no valid loops (find_loops).
 /// Complexity O(n log n) for n loop edges. Thread-safe.
@@ -42,14 +43,19 @@ inline decomposition_report validate_decomposition(const decomposition& d, const
   }
   // Edges: external once on their segment, interfaces twice with matching tags.
   std::vector<double> covered(g.segments.size(), 0.0);
+  double on_segment_length = 0.0;
   for (const auto& [key, list] : edges) {
     if (pr.size() >= o.max_problems) break;
-    if (list[0].tag.type == edge_tag::kind::external)
+    if (list[0].tag.type == edge_tag::kind::external) {
       detail::check_external_edge(key, list, d, g, covered, pr);
-    else
-      detail::check_interface_edge(key, list, d, pr);
+      continue;
+    }
+    detail::check_interface_edge(key, list, d, pr);
+    if (list[0].tag.on_segment && key.first < d.vertices.size() && key.second < d.vertices.size())
+      on_segment_length += detail::distance(d.vertices[key.first], d.vertices[key.second]);
   }
-  detail::check_segment_coverage(g, covered, o.max_problems, pr);
+  detail::check_inner_constraints(d, g, covered, o.max_problems, pr);
+  detail::check_segment_coverage(g, covered, on_segment_length, o.max_problems, pr);
   detail::check_interface_curves(d, edges, o.max_problems, pr);
   rep.domain_area = domain_area(g);
   if (std::abs(rep.area_sum - rep.domain_area) > o.area_tolerance * std::abs(rep.domain_area))

@@ -30,10 +30,10 @@ struct fnv1a {
 } // namespace detail
 
 /// A 64-bit FNV-1a hash of what the kernel inputs are built from: the decomposition's vertex
-/// coordinates (bits), every subdomain's loops, the path edges (endpoints, sides, k, pieces),
-/// the split points and the corners of the shield triangles. Equal decompositions hash equal; a
-/// difference in any of these (another binary, another input, a non-deterministic build) almost
-/// surely not. Complexity linear in the decomposition.
+/// coordinates (bits), every subdomain's loops and inner constraints, the path edges (endpoints,
+/// sides, k, pieces), the split points and the corners of the shield triangles. Equal
+/// decompositions hash equal; a difference in any of these (another binary, another input, a
+/// non-deterministic build) almost surely not. Complexity linear in the decomposition.
 inline std::uint64_t fingerprint(const decoupled_decomposition& dd) {
   detail::fnv1a f;
   f.add(dd.parts.vertices.size());
@@ -41,12 +41,19 @@ inline std::uint64_t fingerprint(const decoupled_decomposition& dd) {
     f.add(p.x);
     f.add(p.y);
   }
-  for (const subdomain& s : dd.parts.subdomains)
+  for (const subdomain& s : dd.parts.subdomains) {
     for (const auto& loop : s.loops) {
       f.add(loop.size());
       for (const index_t v : loop)
         f.add(v);
     }
+    f.add(s.inner.size());
+    for (const inner_constraint& c : s.inner) {
+      f.add(c.a);
+      f.add(c.b);
+      f.add(c.segment);
+    }
+  }
   f.add(dd.k);
   for (const path_edge& e : dd.path) {
     f.add(e.u);

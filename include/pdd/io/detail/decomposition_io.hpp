@@ -99,7 +99,8 @@ inline void read_decomposition_vertices(decomposition_reader& r, decomposition& 
   r.next("'pdd-decomposition 1'");
   r.expect_keyword(0, "pdd-decomposition");
   r.expect_count(2, "pdd-decomposition VERSION");
-  if (r.token(1) != "1") r.fail("unsupported version '" + r.token(1) + "', expected 1");
+  if (r.token(1) != "1" && r.token(1) != "2")
+    r.fail("unsupported version '" + r.token(1) + "', expected 1 or 2");
   r.next("'vertices <n>'");
   r.expect_keyword(0, "vertices");
   r.expect_count(2, "vertices <n>");
@@ -115,11 +116,20 @@ inline void read_decomposition_vertices(decomposition_reader& r, decomposition& 
 /// Reads one edge line of a loop: appends its vertex (< nv) and its tag (neighbours < ns).
 inline void read_decomposition_edge(decomposition_reader& r, index_t nv, index_t ns,
                                     std::vector<index_t>& loop, std::vector<edge_tag>& tags) {
-  r.next("an edge line '<vertex> e|i <id> <marker|neighbour>'");
-  r.expect_count(4, "<vertex> e|i <id> <marker|neighbour>");
+  r.next("an edge line '<vertex> e|i|s <id> <marker|neighbour> [<marker>]'");
+  if (r.size() > 1 && r.token(1) == "s")
+    r.expect_count(5, "<vertex> s <interface id> <neighbour> <marker>");
+  else
+    r.expect_count(4, "<vertex> e|i <id> <marker|neighbour>");
   loop.push_back(r.integer<index_t>(0, nv - 1));
   edge_tag t;
-  if (r.token(1) == "e") {
+  if (r.token(1) == "s") {
+    t.type = edge_tag::kind::interface;
+    t.id = r.integer<index_t>(2, max_decomposition_count);
+    t.neighbour = r.integer<index_t>(3, ns - 1);
+    t.on_segment = true;
+    t.marker = r.marker(4);
+  } else if (r.token(1) == "e") {
     t.type = edge_tag::kind::external;
     t.id = r.integer<index_t>(2, max_decomposition_count);
     t.marker = r.marker(3);
@@ -128,19 +138,51 @@ inline void read_decomposition_edge(decomposition_reader& r, index_t nv, index_t
     t.id = r.integer<index_t>(2, max_decomposition_count);
     t.neighbour = r.integer<index_t>(3, ns - 1);
   } else {
-    r.fail("expected 'e' (external) or 'i' (interface), found '" + r.token(1) + "'");
+    r.fail("expected 'e' (external), 'i' (interface) or 's' (interface on a segment), found '" +
+           r.token(1) + "'");
   }
   tags.push_back(t);
 }
 
+/// Reads one inner constraint line ('segment <a> <b> <segment id> <marker>' or 'vertex <a>').
+inline inner_constraint read_inner_constraint(decomposition_reader& r, index_t nv) {
+  r.next("an inner constraint line 'segment <a> <b> <segment id> <marker>' or 'vertex <a>'");
+  inner_constraint c;
+  if (r.size() > 0 && r.token(0) == "vertex") {
+    r.expect_count(2, "vertex <a>");
+    c.a = c.b = r.integer<index_t>(1, nv - 1);
+    return c;
+  }
+  r.expect_keyword(0, "segment");
+  r.expect_count(5, "segment <a> <b> <segment id> <marker>");
+  c.a = r.integer<index_t>(1, nv - 1);
+  c.b = r.integer<index_t>(2, nv - 1);
+  c.segment = r.integer<index_t>(3, max_decomposition_count);
+  c.marker = r.marker(4);
+  if (c.a == c.b) r.fail("an inner segment needs two different vertices");
+  return c;
+}
+
+/// Writes one loop edge line: external, interface, or interface on an input segment.
+inline void put_decomposition_edge(std::ostream& os, index_t v, const edge_tag& t) {
+  os << v;
+  if (t.type == edge_tag::kind::external)
+    os << " e " << t.id << ' ' << t.marker << '\n';
+  else if (t.on_segment)
+    os << " s " << t.id << ' ' << t.neighbour << ' ' << t.marker << '\n';
+  else
+    os << " i " << t.id << ' ' << t.neighbour << '\n';
+}
+
 /// Reads one subdomain (its header line and its loops); nv vertices, ns subdomains.
 inline subdomain read_decomposition_subdomain(decomposition_reader& r, index_t nv, index_t ns) {
-  r.next("'subdomain <area> <loops>'");
+  r.next("'subdomain <area> <loops> [<inner>]'");
   r.expect_keyword(0, "subdomain");
-  r.expect_count(3, "subdomain <area> <loops>");
+  if (r.size() != 4) r.expect_count(3, "subdomain <area> <loops> [<inner>]");
   subdomain sd;
   sd.area = r.real(1);
   const index_t nl = r.integer<index_t>(2, max_decomposition_count);
+  const index_t ni = r.size() == 4 ? r.integer<index_t>(3, max_decomposition_count) : 0;
   if (nl == 0) r.fail("a subdomain needs at least one loop");
   for (index_t l = 0; l < nl; ++l) {
     r.next("'loop <edges>'");
@@ -155,6 +197,8 @@ inline subdomain read_decomposition_subdomain(decomposition_reader& r, index_t n
     sd.loops.push_back(std::move(loop));
     sd.tags.push_back(std::move(tags));
   }
+  for (index_t i = 0; i < ni; ++i)
+    sd.inner.push_back(read_inner_constraint(r, nv));
   return sd;
 }
 

@@ -171,14 +171,19 @@ struct id_loop {
   std::vector<madd_edge_tag> t;
 };
 
-/// The distinct points of all region loops in lexicographic order, with their markers, as
-/// the vertices of d.
+/// The distinct points of all region loops and features in lexicographic order, with their
+/// markers, as the vertices of d.
 inline void number_vertices(const std::vector<madd_region>& regions, decomposition& d) {
   std::vector<std::pair<point, int>> pts;
-  for (const madd_region& r : regions)
+  for (const madd_region& r : regions) {
     for (const madd_loop& l : r.loops)
       for (std::size_t i = 0; i < l.size(); ++i)
         pts.emplace_back(l.points[i], l.markers[i]);
+    for (const madd_feature& f : r.features) {
+      pts.emplace_back(f.a, f.marker_a);
+      pts.emplace_back(f.b, f.marker_b);
+    }
+  }
   std::sort(pts.begin(), pts.end());
   pts.erase(std::unique(pts.begin(), pts.end(),
                         [](const auto& a, const auto& b) { return a.first == b.first; }),
@@ -189,15 +194,20 @@ inline void number_vertices(const std::vector<madd_region>& regions, decompositi
   }
 }
 
+/// The id of point p among the sorted vertices of d.
+inline index_t pool_id(const decomposition& d, point p) {
+  const auto it = std::lower_bound(d.vertices.begin(), d.vertices.end(), p);
+  PDD_ASSERT(it != d.vertices.end() && *it == p);
+  return static_cast<index_t>(it - d.vertices.begin());
+}
+
 /// The regions' loops by the vertex ids of d (sorted vertices): each loop starts at its
-/// smallest id, holes are ordered by their first id, regions by their outer loops.
+/// smallest id, holes are ordered by their first id, regions by their outer loops;
+/// region_of[s] is the region that became subdomain s.
 inline std::vector<std::vector<id_loop>> numbered_loops(const std::vector<madd_region>& regions,
-                                                        const decomposition& d) {
-  auto id_of = [&](point p) {
-    const auto it = std::lower_bound(d.vertices.begin(), d.vertices.end(), p);
-    PDD_ASSERT(it != d.vertices.end() && *it == p);
-    return static_cast<index_t>(it - d.vertices.begin());
-  };
+                                                        const decomposition& d,
+                                                        std::vector<std::size_t>& region_of) {
+  auto id_of = [&](point p) { return pool_id(d, p); };
   std::vector<std::vector<id_loop>> subs;
   for (const madd_region& r : regions) {
     std::vector<id_loop> loops;
@@ -217,8 +227,28 @@ inline std::vector<std::vector<id_loop>> numbered_loops(const std::vector<madd_r
               [](const id_loop& a, const id_loop& b) { return a.v[0] < b.v[0]; });
     subs.push_back(std::move(loops));
   }
-  std::sort(subs.begin(), subs.end(), [](const auto& a, const auto& b) { return a[0].v < b[0].v; });
-  return subs;
+  region_of.resize(subs.size());
+  for (std::size_t i = 0; i < subs.size(); ++i)
+    region_of[i] = i;
+  std::sort(region_of.begin(), region_of.end(),
+            [&](std::size_t a, std::size_t b) { return subs[a][0].v < subs[b][0].v; });
+  std::vector<std::vector<id_loop>> sorted;
+  for (const std::size_t i : region_of)
+    sorted.push_back(std::move(subs[i]));
+  return sorted;
+}
+
+/// The features of a region as inner constraints over the pool of d, in input order
+/// (segments by id, then vertices by id).
+inline std::vector<inner_constraint> inner_constraints(const madd_region& r,
+                                                       const decomposition& d) {
+  std::vector<inner_constraint> out;
+  for (const madd_feature& f : r.features)
+    out.push_back({pool_id(d, f.a), pool_id(d, f.b), f.segment, f.marker});
+  std::sort(out.begin(), out.end(), [](const inner_constraint& x, const inner_constraint& y) {
+    return std::tie(x.segment, x.a) < std::tie(y.segment, y.a);
+  });
+  return out;
 }
 
 /// An undirected edge by its vertex ids (smaller first), or a pair of subdomains.
@@ -352,17 +382,21 @@ inline subdomain make_subdomain(const std::vector<id_loop>& loops, index_t s,
 
 /// The decomposition value of the final regions: vertex ids in lexicographic order of the
 /// coordinates, every loop starting at its smallest id, holes ordered by their first id,
-/// subdomains ordered by their outer loops, interfaces found from the shared edges.
+/// subdomains ordered by their outer loops, interfaces found from the shared edges, each
+/// region's features as its subdomain's inner constraints.
 /// \throws internal_error if an interface edge is not shared by exactly two regions.
 inline decomposition assemble_decomposition(const std::vector<madd_region>& regions) {
   decomposition d;
   number_vertices(regions, d);
-  const std::vector<std::vector<id_loop>> subs = numbered_loops(regions, d);
+  std::vector<std::size_t> region_of;
+  const std::vector<std::vector<id_loop>> subs = numbered_loops(regions, d, region_of);
   std::map<index_pair, index_t> edge_interface;
   for (const auto& [sides, edges] : shared_interface_edges(subs))
     chain_interface_edges(sides, edges, d, edge_interface);
-  for (index_t s = 0; s < subs.size(); ++s)
+  for (index_t s = 0; s < subs.size(); ++s) {
     d.subdomains.push_back(make_subdomain(subs[s], s, d, edge_interface));
+    d.subdomains.back().inner = inner_constraints(regions[region_of[s]], d);
+  }
   return d;
 }
 

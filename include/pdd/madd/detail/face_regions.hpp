@@ -4,7 +4,10 @@
 /// holes whose loops are walked along the segments around it. A segment between two faces of
 /// the domain (an internal constraint) is then an edge of both regions: MADD keeps their
 /// vertices conforming (apply_edge_splits) and assemble_decomposition makes it an interface,
-/// so the decoupling path splits it like a separator.
+/// so the decoupling path splits it like a separator. A segment with one face on both sides
+/// (dangling, or joining two points of the face's boundary) and an isolated vertex are
+/// features of their face's region (madd_feature): MADD keeps every separator away from them
+/// (madd/detail/features.hpp), so each ends up inside one subdomain and its kernel meshes it.
 #pragma once
 
 #include <pdd/core/pslg.hpp>
@@ -63,13 +66,21 @@ inline std::string vertex_name(const pslg& g, index_t v) {
   return "vertex " + std::to_string(v) + " " + to_string(g.vertices[v]);
 }
 
+/// A segment with the same face on both sides (dangling, or joining two points of that
+/// face's boundary) as a feature of that face.
+inline madd_feature segment_feature(const pslg& g, index_t s) {
+  const segment& sg = g.segments[s];
+  auto marker = [&](index_t v) { return v < g.vertex_markers.size() ? g.vertex_markers[v] : 0; };
+  return {g.vertices[sg.a], g.vertices[sg.b], marker(sg.a), marker(sg.b), s, sg.marker};
+}
+
 /// The boundary half-edges of every face (a triangle edge whose twin lies in another face or
-/// outside the domain), sorted by face then tail. `refusal` names a segment with the same face
-/// on both sides (a dangling segment). Complexity O(T log T) for T domain triangles.
+/// outside the domain), sorted by face then tail. A segment with the same face on both sides
+/// goes to features[face] instead. Complexity O(T log T) for T domain triangles.
 inline std::vector<face_half_edge>
 face_boundaries(const pslg& g, const std::vector<domain_triangle>& tris,
                 const std::vector<std::tuple<index_t, index_t, index_t>>& segments,
-                std::string& refusal) {
+                std::vector<std::vector<madd_feature>>& features) {
   std::vector<face_half_edge> half;
   for (const domain_triangle& t : tris)
     for (int i = 0; i < 3; ++i)
@@ -81,11 +92,7 @@ face_boundaries(const pslg& g, const std::vector<domain_triangle>& tris,
     const bool inside = twin != half.end() && twin->a == h.b && twin->b == h.a;
     if (inside && twin->face == h.face) {
       const index_t s = segment_of(segments, h.a, h.b);
-      if (s != no_index && refusal.empty())
-        refusal = "segment " + std::to_string(s) + " (" + vertex_name(g, h.a) + " to " +
-                  vertex_name(g, h.b) +
-                  ") has the same face on both sides (a dangling segment): the decoupled "
-                  "pipeline needs every segment in the domain to bound a face";
+      if (s != no_index && h.a < h.b) features[h.face].push_back(segment_feature(g, s));
       continue;
     }
     out.push_back(h);
@@ -96,17 +103,22 @@ face_boundaries(const pslg& g, const std::vector<domain_triangle>& tris,
   return out;
 }
 
-/// Checks that no vertex with the domain around it lies on no segment (an isolated vertex).
-inline void check_isolated_vertices(const pslg& g, const domain_faces& faces,
-                                    std::string& refusal) {
+/// Adds every vertex on no segment with the domain around it (an isolated vertex) to the
+/// features of its face.
+inline void add_isolated_vertices(const pslg& g, const std::vector<domain_triangle>& tris,
+                                  std::vector<std::vector<madd_feature>>& features) {
   std::vector<char> on_segment(g.vertices.size(), 0);
   for (const segment& s : g.segments)
     on_segment[s.a] = on_segment[s.b] = 1;
-  for (index_t v = 0; v < g.vertices.size() && refusal.empty(); ++v)
-    if (!on_segment[v] && faces.touches_domain(v))
-      refusal = vertex_name(g, v) +
-                " lies on no segment (an isolated vertex): the decoupled pipeline needs every "
-                "vertex in the domain on the boundary of a face";
+  std::vector<index_t> face_of(g.vertices.size(), no_index);
+  for (const domain_triangle& t : tris)
+    for (const index_t v : t.vertices)
+      if (!on_segment[v]) face_of[v] = t.face;
+  for (index_t v = 0; v < g.vertices.size(); ++v)
+    if (face_of[v] != no_index) {
+      const int m = v < g.vertex_markers.size() ? g.vertex_markers[v] : 0;
+      features[face_of[v]].push_back({g.vertices[v], g.vertices[v], m, m, no_index, 0});
+    }
 }
 
 /// Walks the boundary half-edges of one face (edges[first, last), sorted by tail) into
@@ -161,6 +173,48 @@ inline std::string small_constraint_corner(const pslg& g, const std::vector<inde
          "pipeline shields small angles on the domain boundary only";
 }
 
+/// Refusal text when a segment feature of the face starts at a vertex of its loops where the
+/// decoupled pipeline cannot take it: the apex of a corner below 60 deg (a shield would cross
+/// it), or at an angle below 60 deg to an internal constraint (an interface, which the
+/// kernel's refinement around that small angle may not split). Else empty.
+inline std::string feature_at_corner(const pslg& g, const std::vector<std::vector<index_t>>& loops,
+                                     const std::vector<madd_feature>& features,
+                                     const std::vector<face_half_edge>& boundary_by_edge) {
+  auto internal = [&](index_t a, index_t b) {
+    return std::binary_search(boundary_by_edge.begin(), boundary_by_edge.end(),
+                              face_half_edge{b, a, 0});
+  };
+  std::vector<std::pair<point, point>> ends; // (one end, the other end), sorted
+  for (const madd_feature& f : features)
+    if (!f.is_vertex()) {
+      ends.emplace_back(f.a, f.b);
+      ends.emplace_back(f.b, f.a);
+    }
+  std::sort(ends.begin(), ends.end());
+  for (const auto& loop : loops)
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const index_t prev = loop[(i + loop.size() - 1) % loop.size()], v = loop[i],
+                    next = loop[(i + 1) % loop.size()];
+      const point pv = g.vertices[v];
+      const double corner = interior_angle_deg(g.vertices[prev], pv, g.vertices[next]);
+      const auto by_end = [](const std::pair<point, point>& e, point p) { return e.first < p; };
+      for (auto it = std::lower_bound(ends.begin(), ends.end(), pv, by_end);
+           it != ends.end() && it->first == pv; ++it) {
+        const point far = it->second;
+        const bool small_to_internal =
+            (internal(prev, v) && angle_deg(pv, far, g.vertices[prev]) < 60.0) ||
+            (internal(v, next) && angle_deg(pv, far, g.vertices[next]) < 60.0);
+        if (corner < 60.0 || small_to_internal)
+          return "a segment inside a face (to " + to_string(far) + ") starts at " +
+                 vertex_name(g, v) +
+                 (corner < 60.0 ? ", the apex of a corner below 60 deg that the decoupled "
+                                  "pipeline shields"
+                                : " at an angle below 60 deg to an internal constraint");
+      }
+    }
+  return {};
+}
+
 /// One face's loops as a MADD region: the counter-clockwise loop first, then the holes.
 inline madd_region face_region(const pslg& g, const std::vector<std::vector<index_t>>& loops,
                                const std::vector<std::tuple<index_t, index_t, index_t>>& segs) {
@@ -186,18 +240,20 @@ inline madd_region face_region(const pslg& g, const std::vector<std::vector<inde
 }
 
 /// The faces of the domain of g (pdd::domain_faces by g.rule) as MADD regions, in face order,
-/// or the first reason (dangling segment, isolated vertex, pinch vertex, constraint corner
-/// below 60 deg) why the decoupled pipeline cannot take g. Each region's loops run along PSLG
-/// segments, tagged external with the segment id and marker.
+/// with their features (dangling segments, segments with the face on both sides, isolated
+/// vertices), or the first reason (a pinch vertex, a constraint corner below 60 deg, a feature
+/// at a corner below 60 deg or at a small angle to an internal constraint) why the
+/// decoupled pipeline cannot take g. Each region's loops run along PSLG segments, tagged
+/// external with the segment id and marker.
 /// \throws pdd::geometry_error as pdd::domain_faces. Complexity O(n log n) expected.
 inline face_region_set face_regions(const pslg& g) {
   face_region_set out;
   const domain_faces faces(g);
   const auto segs = segment_lookup(g);
-  const std::vector<face_half_edge> edges =
-      face_boundaries(g, faces.triangles(), segs, out.refusal);
-  check_isolated_vertices(g, faces, out.refusal);
-  if (!out.refusal.empty()) return out;
+  const std::vector<domain_triangle> tris = faces.triangles();
+  std::vector<std::vector<madd_feature>> features(faces.face_count());
+  const std::vector<face_half_edge> edges = face_boundaries(g, tris, segs, features);
+  add_isolated_vertices(g, tris, features);
   std::vector<face_half_edge> by_edge = edges;
   std::sort(by_edge.begin(), by_edge.end());
   for (std::size_t first = 0; first < edges.size();) {
@@ -209,8 +265,11 @@ inline face_region_set face_regions(const pslg& g) {
     for (const auto& loop : loops)
       for (std::size_t i = 0; i < loop.size() && out.refusal.empty(); ++i)
         out.refusal = small_constraint_corner(g, loop, i, by_edge);
+    if (out.refusal.empty())
+      out.refusal = feature_at_corner(g, loops, features[edges[first].face], by_edge);
     if (!out.refusal.empty()) break;
     out.regions.push_back(face_region(g, loops, segs));
+    out.regions.back().features = std::move(features[edges[first].face]);
     first = last;
   }
   if (!out.refusal.empty()) out.regions.clear();

@@ -41,10 +41,25 @@ struct madd_loop {
   std::size_t size() const noexcept { return points.size(); }
 };
 
-/// A region: loops[0] is the outer loop (counter-clockwise), loops[1..] the holes (clockwise).
+/// A constraint inside a region of a general PSLG (issue 13) that no separator may touch, so
+/// that it lies inside one subdomain and its kernel meshes it: a segment with the region on
+/// both sides (a dangling segment, or one joining two points of the region's boundary), or an
+/// isolated vertex (`b == a`, `segment == no_index`). Its ends may lie on the region's loops.
+struct madd_feature {
+  point a, b;
+  int marker_a = 0, marker_b = 0; ///< vertex markers
+  index_t segment = no_index;     ///< the input segment, no_index for an isolated vertex
+  int marker = 0;                 ///< the segment's marker
+  bool is_vertex() const noexcept { return segment == no_index; }
+  friend bool operator==(const madd_feature&, const madd_feature&) = default;
+};
+
+/// A region: loops[0] is the outer loop (counter-clockwise), loops[1..] the holes (clockwise),
+/// and the features inside it (general PSLGs only).
 struct madd_region {
   std::vector<madd_loop> loops;
   double area = 0.0;
+  std::vector<madd_feature> features;
 };
 
 /// A vertex that a split kept on an edge of its region (a separator ends there). Every region

@@ -38,6 +38,8 @@ inline void check_madd_options(const madd_options& o) {
     bad("max_part_fraction must be in [0.5, 1]");
   if (!(o.max_subdomain_area > 0.0)) bad("max_subdomain_area must be positive");
   if (!(o.round_fraction > 0.0 && o.round_fraction <= 1.0)) bad("round_fraction must be in (0, 1]");
+  if (!(o.feature_clearance >= 0.0) || !std::isfinite(o.feature_clearance))
+    bad("feature_clearance must be finite and >= 0");
   if (!std::isfinite(o.max_subdomain_area) && o.subdomains < 1) bad("subdomains must be >= 1");
   if (o.split_policy && std::isfinite(o.max_subdomain_area))
     bad("max_subdomain_area must stay infinite with a split_policy (the policy decides)");
@@ -134,6 +136,7 @@ inline madd_split_options split_options_for(const madd_options& o) {
   so.max_encroachment_depth = o.max_encroachment_depth;
   so.imbalance_bound = o.imbalance_bound;
   so.max_part_fraction = o.max_part_fraction;
+  so.feature_clearance = o.feature_clearance;
   return so;
 }
 

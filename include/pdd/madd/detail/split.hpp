@@ -16,6 +16,7 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/detail/children.hpp>
+#include <pdd/madd/detail/features.hpp>
 #include <pdd/madd/detail/graph.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/triangulation.hpp>
@@ -42,6 +43,7 @@ struct madd_split_options {
   double max_part_fraction = 0.55; ///< given to the partitioner
   int max_repairs = 64;
   std::uint64_t seed = 1;
+  double feature_clearance = 0.0; ///< madd_options::feature_clearance
 };
 
 /// The result of one split.
@@ -286,6 +288,8 @@ madd_split_result split_at_level(const madd_region& r, const madd_split_options&
     g = build_madd_graph(tr, go);
     cur.fallback = true;
   }
+  // no separator within max(h, clearance) of a feature
+  forbid_cuts_near_features(r, tr, g, std::max(h, o.feature_clearance));
   cur.level = level;
   cur.z_points = tr.z.size();
   cur.junctions = g.junctions;
@@ -299,6 +303,7 @@ madd_split_result split_at_level(const madd_region& r, const madd_split_options&
     cur.failure += " (refinement level " + std::to_string(level) + ")";
     return cur;
   }
+  distribute_features(r, cur.children);
   cur.ok = true;
   cur.max_fraction = std::max(cur.children[0].area, cur.children[1].area) /
                      (cur.children[0].area + cur.children[1].area);

@@ -6,6 +6,7 @@
 
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/geometry/domain_faces.hpp>
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_report.hpp>
 #include <pdd/madd/detail/region.hpp>
@@ -235,15 +236,74 @@ inline void check_interface_edge(const std::pair<index_t, index_t>& key,
                  " does not exist or joins other subdomains");
 }
 
-/// The external edges cover every input segment exactly (relative 1e-9).
+/// Inner constraints (general PSLGs): ids in range, each segment on the input segment it
+/// names (same ends, same marker; adds its length to `covered`), and no vertex of one on a
+/// separator (an interface edge not on an input segment: no separator touches them).
+inline void check_inner_constraints(const decomposition& d, const pslg& g,
+                                    std::vector<double>& covered, std::size_t max_problems,
+                                    std::vector<std::string>& pr) {
+  std::vector<char> on_interface(d.vertices.size(), 0);
+  for (const subdomain& sd : d.subdomains)
+    for (std::size_t l = 0; l < sd.loops.size() && l < sd.tags.size(); ++l)
+      for (std::size_t i = 0; i < sd.loops[l].size() && i < sd.tags[l].size(); ++i) {
+        const edge_tag& t = sd.tags[l][i];
+        if (t.type != edge_tag::kind::interface || t.on_segment) continue;
+        for (const index_t v : {sd.loops[l][i], sd.loops[l][(i + 1) % sd.loops[l].size()]})
+          if (v < on_interface.size()) on_interface[v] = 1;
+      }
+  for (std::size_t s = 0; s < d.subdomains.size() && pr.size() < max_problems; ++s)
+    for (const inner_constraint& c : d.subdomains[s].inner) {
+      const std::string at = "inner constraint of subdomain " + std::to_string(s);
+      if (c.a >= d.vertices.size() || c.b >= d.vertices.size()) {
+        pr.push_back(at + ": vertex id out of range");
+        continue;
+      }
+      if (on_interface[c.a] || on_interface[c.b])
+        pr.push_back(at + " touches a separator at vertex " +
+                     std::to_string(on_interface[c.a] ? c.a : c.b));
+      if (c.segment == no_index) continue;
+      if (c.segment >= g.segments.size()) {
+        pr.push_back(at + ": segment id out of range");
+        continue;
+      }
+      const segment& sg = g.segments[c.segment];
+      const point pa = g.vertices[sg.a], pb = g.vertices[sg.b];
+      const point qa = d.vertices[c.a], qb = d.vertices[c.b];
+      if (!((qa == pa && qb == pb) || (qa == pb && qb == pa)) || c.marker != sg.marker)
+        pr.push_back(at + " is not input segment " + std::to_string(c.segment));
+      else
+        covered[c.segment] += distance(pa, pb);
+    }
+}
+
+/// The external edges and inner constraints cover every input segment exactly (relative
+/// 1e-9), except, by Triangle's rule, the segments with no domain face beside them (not
+/// meshed) and those between two faces of a general PSLG: the latter, not covered at all,
+/// must add up to the length of the interface edges on input segments (edge_tag::on_segment),
+/// which do not name their segment.
 inline void check_segment_coverage(const pslg& g, const std::vector<double>& covered,
-                                   std::size_t max_problems, std::vector<std::string>& pr) {
+                                   double on_segment_length, std::size_t max_problems,
+                                   std::vector<std::string>& pr) {
+  std::vector<char> meshed(g.segments.size(), 1); // by Triangle's rule: a domain face beside it
+  if (g.rule == domain_rule::triangle) {
+    const domain_faces faces(g);
+    for (std::size_t sg = 0; sg < g.segments.size(); ++sg)
+      meshed[sg] = faces.touches_domain(g.segments[sg].a, g.segments[sg].b) ? 1 : 0;
+  }
+  double uncovered = 0.0;
   for (std::size_t sg = 0; sg < g.segments.size() && pr.size() < max_problems; ++sg) {
     const double len = distance(g.vertices[g.segments[sg].a], g.vertices[g.segments[sg].b]);
-    if (std::abs(covered[sg] - len) > 1e-9 * len)
+    if (!meshed[sg] && covered[sg] == 0.0) continue; // dangling outside the domain: not meshed
+    if (covered[sg] == 0.0 && on_segment_length > 0.0)
+      uncovered += len;
+    else if (std::abs(covered[sg] - len) > 1e-9 * len)
       pr.push_back("input segment " + std::to_string(sg) + " is covered to length " +
                    std::to_string(covered[sg]) + " of " + std::to_string(len));
   }
+  if (std::abs(uncovered - on_segment_length) > 1e-9 * std::max(uncovered, on_segment_length))
+    pr.push_back("the input segments no external edge covers have length " +
+                 std::to_string(uncovered) + ", the interface edges on input segments " +
+                 std::to_string(on_segment_length));
 }
 
 /// Interface curves: each consecutive pair is an edge of that interface, and the curves have

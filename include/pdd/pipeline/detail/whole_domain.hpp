@@ -32,8 +32,8 @@ struct general_domain_plan {
 /// A domain that is not one of closed loops: Triangle's rule, and (unless one subdomain is
 /// asked for) its faces, which MADD starts from.
 /// \throws pdd::decomposition_error for options.subdomains > 1 on a domain that cannot be
-/// decoupled (pdd::face_decoupling: a dangling segment, an isolated vertex, a face touching
-/// itself, a constraint corner < 60 deg; the message names it).
+/// decoupled (pdd::face_decoupling: a face touching itself, a constraint corner < 60 deg, a
+/// segment inside a face at such a corner; the message names it).
 inline general_domain_plan plan_general_domain(pslg& domain, const generate_options& options) {
   domain.rule = domain_rule::triangle;
   general_domain_plan p;
