@@ -236,31 +236,41 @@ inline void check_interface_edge(const std::pair<index_t, index_t>& key,
                  " does not exist or joins other subdomains");
 }
 
+/// The vertices of subdomain sd's separator edges (interface edges not on an input segment).
+inline std::vector<index_t> separator_vertices(const subdomain& sd) {
+  std::vector<index_t> out;
+  for (std::size_t l = 0; l < sd.loops.size() && l < sd.tags.size(); ++l)
+    for (std::size_t i = 0; i < sd.loops[l].size() && i < sd.tags[l].size(); ++i) {
+      const edge_tag& t = sd.tags[l][i];
+      if (t.type != edge_tag::kind::interface || t.on_segment) continue;
+      out.push_back(sd.loops[l][i]);
+      out.push_back(sd.loops[l][(i + 1) % sd.loops[l].size()]);
+    }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
 /// Inner constraints (general PSLGs): ids in range, each segment on the input segment it
 /// names (same ends, same marker; adds its length to `covered`), and no vertex of one on a
-/// separator (an interface edge not on an input segment: no separator touches them).
+/// separator of its subdomain (no separator touches them; a separator of a neighbouring face
+/// may end at a vertex they share on the segment between the two faces).
 inline void check_inner_constraints(const decomposition& d, const pslg& g,
                                     std::vector<double>& covered, std::size_t max_problems,
                                     std::vector<std::string>& pr) {
-  std::vector<char> on_interface(d.vertices.size(), 0);
-  for (const subdomain& sd : d.subdomains)
-    for (std::size_t l = 0; l < sd.loops.size() && l < sd.tags.size(); ++l)
-      for (std::size_t i = 0; i < sd.loops[l].size() && i < sd.tags[l].size(); ++i) {
-        const edge_tag& t = sd.tags[l][i];
-        if (t.type != edge_tag::kind::interface || t.on_segment) continue;
-        for (const index_t v : {sd.loops[l][i], sd.loops[l][(i + 1) % sd.loops[l].size()]})
-          if (v < on_interface.size()) on_interface[v] = 1;
-      }
-  for (std::size_t s = 0; s < d.subdomains.size() && pr.size() < max_problems; ++s)
+  for (std::size_t s = 0; s < d.subdomains.size() && pr.size() < max_problems; ++s) {
+    const std::vector<index_t> separator = separator_vertices(d.subdomains[s]);
+    const auto on_interface = [&](index_t v) {
+      return std::binary_search(separator.begin(), separator.end(), v);
+    };
     for (const inner_constraint& c : d.subdomains[s].inner) {
       const std::string at = "inner constraint of subdomain " + std::to_string(s);
       if (c.a >= d.vertices.size() || c.b >= d.vertices.size()) {
         pr.push_back(at + ": vertex id out of range");
         continue;
       }
-      if (on_interface[c.a] || on_interface[c.b])
+      if (on_interface(c.a) || on_interface(c.b))
         pr.push_back(at + " touches a separator at vertex " +
-                     std::to_string(on_interface[c.a] ? c.a : c.b));
+                     std::to_string(on_interface(c.a) ? c.a : c.b));
       if (c.segment == no_index) continue;
       if (c.segment >= g.segments.size()) {
         pr.push_back(at + ": segment id out of range");
@@ -274,6 +284,7 @@ inline void check_inner_constraints(const decomposition& d, const pslg& g,
       else
         covered[c.segment] += distance(pa, pb);
     }
+  }
 }
 
 /// The external edges and inner constraints cover every input segment exactly (relative
