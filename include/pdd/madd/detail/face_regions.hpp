@@ -153,6 +153,14 @@ inline bool walk_face_loops(const pslg& g, const std::vector<face_half_edge>& ed
   return true;
 }
 
+/// True when the boundary edge a -> b of a face is an internal constraint: its twin b -> a
+/// bounds another face of the domain (boundary_by_edge: face_boundaries sorted by edge).
+inline bool internal_constraint(const std::vector<face_half_edge>& boundary_by_edge, index_t a,
+                                index_t b) {
+  return std::binary_search(boundary_by_edge.begin(), boundary_by_edge.end(),
+                            face_half_edge{b, a, 0});
+}
+
 /// Refusal text when the corner of `loop` at position i (a face corner) is < 60 deg and one of
 /// its sides is an internal constraint (a segment with another face of the domain beyond it),
 /// else empty.
@@ -163,9 +171,8 @@ inline std::string small_constraint_corner(const pslg& g, const std::vector<inde
   const index_t prev = loop[(i + n - 1) % n], v = loop[i], next = loop[(i + 1) % n];
   const double angle = interior_angle_deg(g.vertices[prev], g.vertices[v], g.vertices[next]);
   if (angle >= 60.0) return {};
-  auto internal = [&](index_t a, index_t b) { // the twin b -> a bounds another face
-    return std::binary_search(boundary_by_edge.begin(), boundary_by_edge.end(),
-                              face_half_edge{b, a, 0});
+  const auto internal = [&](index_t a, index_t b) {
+    return internal_constraint(boundary_by_edge, a, b);
   };
   if (!internal(prev, v) && !internal(v, next)) return {};
   return "the corner of " + std::to_string(angle) + " deg at " + vertex_name(g, v) +
@@ -180,9 +187,8 @@ inline std::string small_constraint_corner(const pslg& g, const std::vector<inde
 inline std::string feature_at_corner(const pslg& g, const std::vector<std::vector<index_t>>& loops,
                                      const std::vector<madd_feature>& features,
                                      const std::vector<face_half_edge>& boundary_by_edge) {
-  auto internal = [&](index_t a, index_t b) {
-    return std::binary_search(boundary_by_edge.begin(), boundary_by_edge.end(),
-                              face_half_edge{b, a, 0});
+  const auto internal = [&](index_t a, index_t b) {
+    return internal_constraint(boundary_by_edge, a, b);
   };
   std::vector<std::pair<point, point>> ends; // (one end, the other end), sorted
   for (const madd_feature& f : features)
