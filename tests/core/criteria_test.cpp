@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numbers>
 
+namespace criteria_test {
 TEST(Criteria, DefaultIsRatioSqrt2) {
   const pdd::mesh_criteria c;
   EXPECT_NEAR(c.ratio_bound(), std::numbers::sqrt2, 1e-12);
@@ -32,3 +33,5 @@ TEST(Errors, AssertThrowsInternalError) {
   EXPECT_THROW(PDD_ASSERT(1 + 1 == 3), pdd::internal_error);
   EXPECT_NO_THROW(PDD_ASSERT(1 + 1 == 2));
 }
+
+} // namespace criteria_test

@@ -12,6 +12,7 @@
 #include <random>
 #include <vector>
 
+namespace triangle_measures_test {
 using pdd::point;
 using pdd::detail::angle_at_deg;
 using pdd::detail::smallest_angle_deg;
@@ -82,3 +83,5 @@ TEST(TriangleMeasures, AnglesMatchThreeAtan2AndSumTo180) {
     ++i;
   }
 }
+
+} // namespace triangle_measures_test

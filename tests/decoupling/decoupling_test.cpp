@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <vector>
 
+namespace decoupling_test {
 namespace {
 
 using pdd::index_t;
@@ -282,3 +283,5 @@ TEST(Decouple, ResplitHalvesPieces) {
 }
 
 } // namespace
+
+} // namespace decoupling_test

@@ -14,6 +14,7 @@
 #include <numbers>
 #include <vector>
 
+namespace geometric_sizing_test {
 namespace {
 
 using pdd::point;
@@ -116,3 +117,5 @@ TEST(GeometricDecompose, GradesTowardsATinyFeature) {
 }
 
 } // namespace
+
+} // namespace geometric_sizing_test

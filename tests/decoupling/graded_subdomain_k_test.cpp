@@ -10,6 +10,7 @@
 #include <cmath>
 #include <vector>
 
+namespace graded_subdomain_k_test {
 namespace {
 
 TEST(GradedSubdomainK, EqualsDecoupleGradedAndLowersForRelation71) {
@@ -42,3 +43,5 @@ TEST(GradedSubdomainK, EqualsDecoupleGradedAndLowersForRelation71) {
 }
 
 } // namespace
+
+} // namespace graded_subdomain_k_test

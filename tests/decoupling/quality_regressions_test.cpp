@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+namespace quality_regressions_test {
 namespace {
 
 /// The files and area bounds of ../shared/data/regressions/README.md.
@@ -77,3 +78,5 @@ TEST(QualityRegressions, PddMeshVerifiesAndWrites) {
   }
   EXPECT_EQ(checked, 7);
 }
+
+} // namespace quality_regressions_test

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+namespace binary_output_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -161,3 +162,5 @@ TEST(DiskCheck, EstimateMatchesTheBytesWritten) {
     }
   EXPECT_EQ(checked, 4u);
 }
+
+} // namespace binary_output_test

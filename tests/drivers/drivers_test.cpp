@@ -18,6 +18,7 @@
 #include <iterator>
 #include <string>
 
+namespace drivers_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -325,3 +326,5 @@ TEST(PddMesh, SvgWindowAndAngleHistogram) {
   EXPECT_EQ(bad.code, 2) << bad.output;
   EXPECT_NE(bad.output.find("--svg-window"), std::string::npos) << bad.output;
 }
+
+} // namespace drivers_test

@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 
+namespace exit_code_test {
 namespace {
 
 using pdd::drivers::exit_code_for;
@@ -29,7 +30,9 @@ TEST(ExitCode, ReportsAndReturns) {
     return std::make_pair(rc, testing::internal::GetCapturedStderr());
   };
   EXPECT_EQ(run([] { return 3; }), std::make_pair(3, std::string()));
-  EXPECT_EQ(run([]() -> int { throw pdd::geometry_error("segments 1 and 2 cross", {1, 2}); }),
+  EXPECT_EQ(run([]() -> int {
+              throw pdd::geometry_error("segments 1 and 2 cross", {1, 2});
+            }),
             std::make_pair(1, std::string("pdd-x: error: in.poly: segments 1 and 2 cross\n")));
   EXPECT_EQ(run([]() -> int { throw pdd::decomposition_error("too thin"); }),
             std::make_pair(1, std::string("pdd-x: error: in.poly: cannot decompose: too thin\n")));
@@ -42,3 +45,5 @@ TEST(ExitCode, ReportsAndReturns) {
 }
 
 } // namespace
+
+} // namespace exit_code_test

@@ -12,6 +12,7 @@
 #include <fstream>
 #include <string>
 
+namespace graded_decompose_test {
 namespace {
 
 pdd::test::command_result decompose(const std::string& args) {
@@ -113,3 +114,5 @@ TEST(PddDecomposeGraded, WeightAndAreaGridsFromFiles) {
   EXPECT_LE(j["graded"]["area_ratio_max"].get<double>(), 1.5);
   EXPECT_GE(j["subdomains"].get<int>(), 14); // 1 / (0.05 * 1.5) = 13.3
 }
+
+} // namespace graded_decompose_test

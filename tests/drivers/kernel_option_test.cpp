@@ -11,6 +11,7 @@
 #include <iterator>
 #include <string>
 
+namespace kernel_option_test {
 namespace {
 
 std::string slurp(const std::filesystem::path& p) {
@@ -51,3 +52,5 @@ TEST(PddMeshKernel, UnknownKernelIsRefused) {
   EXPECT_NE(r.code, 0);
   EXPECT_NE(r.output.find("--kernel"), std::string::npos) << r.output;
 }
+
+} // namespace kernel_option_test

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+namespace pdd_verify_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -163,3 +164,5 @@ INSTANTIATE_TEST_SUITE_P(Formats, PddVerify,
                          [](const auto& param_info) {
                            return std::string(pdd::to_string(param_info.param));
                          });
+
+} // namespace pdd_verify_test

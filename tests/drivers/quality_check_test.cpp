@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+namespace quality_check_test {
 namespace {
 
 namespace fs = std::filesystem;
@@ -123,3 +124,5 @@ TEST(QualityCheck, BadSubdomainMeshIsNeverWrittenNorIndexed) {
   EXPECT_NO_THROW(pdd::generate(d, g, good));
   EXPECT_TRUE(fs::exists(good_files.index_path()));
 }
+
+} // namespace quality_check_test

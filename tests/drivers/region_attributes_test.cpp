@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+namespace region_attributes_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -172,3 +173,5 @@ TEST(PddMeshRegionAttributes, GeneralDomainDecoupledFromItsFaces) {
   EXPECT_NE(no.output.find("visited twice"), std::string::npos) << no.output;
   EXPECT_FALSE(fs::exists(pdd::test::temp_path("pinched_out.node")));
 }
+
+} // namespace region_attributes_test

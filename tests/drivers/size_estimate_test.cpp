@@ -13,6 +13,7 @@
 #include <fstream>
 #include <string>
 
+namespace size_estimate_test {
 namespace {
 
 nlohmann::json read_json(const std::filesystem::path& p) {
@@ -120,3 +121,5 @@ TEST(SizeEstimate, WithinAFactorTwoOnTheSharedGeometries) {
   }
   EXPECT_EQ(checked, 7);
 }
+
+} // namespace size_estimate_test

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <string>
 
+namespace sizing_options_test {
 namespace {
 
 using run_result = pdd::test::command_result;
@@ -97,3 +98,5 @@ TEST(PddMeshSizing, ErrorsNameColumnLineOrRegion) {
 }
 
 } // namespace
+
+} // namespace sizing_options_test

@@ -14,6 +14,7 @@
 #include <random>
 #include <vector>
 
+namespace lfs_test {
 namespace {
 
 using pdd::index_t;
@@ -306,3 +307,5 @@ TEST(Lfs, EmptyPslgIsInfinite) {
 }
 
 } // namespace
+
+} // namespace lfs_test

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+namespace loops_test {
 namespace {
 
 using pdd::index_t;
@@ -212,3 +213,5 @@ TEST(Loops, EmptyPslgHasNoLoops) {
 }
 
 } // namespace
+
+} // namespace loops_test

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+namespace properties_test {
 namespace {
 
 using pdd::index_t;
@@ -179,3 +180,5 @@ TEST(Properties, SharedGeometries) {
 }
 
 } // namespace
+
+} // namespace properties_test

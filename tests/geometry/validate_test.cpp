@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+namespace validate_test {
 namespace {
 
 using pdd::index_t;
@@ -323,3 +324,5 @@ TEST(Validate, IntersectionCheckScalesToManySegments) {
 }
 
 } // namespace
+
+} // namespace validate_test

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+namespace binary_mesh_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -285,3 +286,5 @@ TEST(PieceFiles, ReadersTellTheFormatFromTheFile) {
   EXPECT_NEAR(vtu / 1e8, 35.0, 1.0);
   EXPECT_NEAR(bin / 1e8, 13.6, 0.6);
 }
+
+} // namespace binary_mesh_test

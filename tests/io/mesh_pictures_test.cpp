@@ -8,6 +8,7 @@
 
 #include <string>
 
+namespace mesh_pictures_test {
 namespace {
 
 std::size_t occurrences(const std::string& s, const std::string& what) {
@@ -96,3 +97,5 @@ TEST(MeshPictures, ShadeByAreaShowsTheGrading) {
   EXPECT_NE(s.find("shade: triangle area 0.1 (darkest) to 0.4 (none), log scale"),
             std::string::npos);
 }
+
+} // namespace mesh_pictures_test

@@ -22,6 +22,7 @@
 #include <tuple>
 #include <vector>
 
+namespace mesh_writers_test {
 namespace {
 
 using json = nlohmann::json;
@@ -524,3 +525,5 @@ TEST(RegionAttributes, RefusedWhereTheyCannotBeWrittenAndNoFileIsLeft) {
   EXPECT_THROW(pdd::write_mesh(dir / "d.svg", m, ok), pdd::error); // an .svg cannot show them
   EXPECT_TRUE(pdd::test::dir_entries(dir).empty());
 }
+
+} // namespace mesh_writers_test

@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+namespace poly_read_test {
 namespace {
 
 pdd::pslg parse(const std::string& text, const std::filesystem::path& node_dir = {}) {
@@ -321,3 +322,5 @@ TEST(PolyRead, SharedGeometriesMatchTheReadme) {
     EXPECT_EQ(g.vertex_markers.size(), g.vertices.size());
   }
 }
+
+} // namespace poly_read_test

@@ -15,6 +15,7 @@
 #include <stdexcept>
 #include <string>
 
+namespace poly_write_test {
 namespace {
 
 std::uint64_t bits(double d) {
@@ -230,3 +231,5 @@ TEST(AtomicFile, FailedWritesLeaveNoTemporaryAndKeepTheOldFile) {
   // A path without a file name.
   EXPECT_THROW(pdd::write_file_atomically(dir / "", [](std::ostream&) {}), pdd::error);
 }
+
+} // namespace poly_write_test

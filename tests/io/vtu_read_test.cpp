@@ -17,6 +17,7 @@
 #include <random>
 #include <string>
 
+namespace vtu_read_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -124,3 +125,5 @@ TEST(ReadPvtu, ListsThePiecesRelativeToItsFolder) {
     EXPECT_NE(std::string(e.what()).find("empty.pvtu"), std::string::npos) << e.what();
   }
 }
+
+} // namespace vtu_read_test

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+namespace exterior_angle_test {
 namespace {
 
 using pdd::point;
@@ -117,3 +118,5 @@ TYPED_TEST(MesherExteriorAngles, RandomisedSharpCornersAcrossAThinPart) {
   EXPECT_GT(holes, 200);
   EXPECT_GT(notches, 200);
 }
+
+} // namespace exterior_angle_test

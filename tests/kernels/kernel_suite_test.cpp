@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+namespace kernel_suite_test {
 namespace {
 
 using pdd::index_t;
@@ -214,3 +215,5 @@ TYPED_TEST(KernelSuite, EverySharedClosedLoopGeometryShielded) {
   EXPECT_EQ(shielded, 6);
   EXPECT_EQ(open, 2);
 }
+
+} // namespace kernel_suite_test

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+namespace mesher_test {
 namespace {
 
 using pdd::index_t;
@@ -425,3 +426,5 @@ TYPED_TEST(MesherSharedData, DanglingSegmentsAndFreeVerticesAreMeshed) {
       EXPECT_TRUE(used[v]) << v;
   }
 }
+
+} // namespace mesher_test

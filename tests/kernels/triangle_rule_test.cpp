@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+namespace triangle_rule_test {
 namespace {
 
 pdd::mesh_criteria criteria(double max_area) {
@@ -110,3 +111,5 @@ TEST(CgalMesherTriangleRule, DanglingSegmentOutsideASmallAngleIsLeftOut) {
     kept = kept || (std::min(e.a, e.b) == 0 && std::max(e.a, e.b) >= 3);
   EXPECT_TRUE(kept);
 }
+
+} // namespace triangle_rule_test

@@ -13,6 +13,7 @@
 
 #include <filesystem>
 
+namespace bahamas_test {
 TEST(LongShielded, BahamasDecoupledVerifiedAndThreadIndependent) {
   const auto dir = pdd::test::shared_data_dir();
   if (dir.empty() || !std::filesystem::exists(dir / "bahamas_islands.poly"))
@@ -35,3 +36,5 @@ TEST(LongShielded, BahamasDecoupledVerifiedAndThreadIndependent) {
   o.threads = 2;
   EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, pdd::generate(g, o).mesh)) << "1 vs 2 threads";
 }
+
+} // namespace bahamas_test

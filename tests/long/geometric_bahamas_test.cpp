@@ -20,6 +20,7 @@
 #include <filesystem>
 #include <string>
 
+namespace geometric_bahamas_test {
 namespace {
 
 pdd::triangle_mesh mesh_verified(const pdd::pslg& g, const pdd::generate_options& o,
@@ -69,3 +70,5 @@ TEST(LongGeometric, BahamasAutomaticVerifiedAndThreadIndependent) {
   EXPECT_TRUE(pdd::test::bitwise_equal(one, mesh_verified(g, o, st2))) << "1 vs 2 threads";
   EXPECT_EQ(st2.path, st.path);
 }
+
+} // namespace geometric_bahamas_test

@@ -13,6 +13,7 @@
 
 #include <string>
 
+namespace gradation_long_test {
 TEST(LongGradationControl, ReachesR1AndR2OnSteepTable71Fields) {
   const pdd::pslg g = pdd::pipe_domain();
   std::size_t previous = 0;
@@ -29,3 +30,5 @@ TEST(LongGradationControl, ReachesR1AndR2OnSteepTable71Fields) {
     RecordProperty("subdomains_d" + std::to_string(p), static_cast<int>(previous));
   }
 }
+
+} // namespace gradation_long_test

@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <string>
 
+namespace kernel_squares_test {
 template <class M>
 class LongKernelSquares : public ::testing::Test {};
 TYPED_TEST_SUITE(LongKernelSquares, pdd::test::kernel_types, pdd::test::kernel_names);
@@ -33,3 +34,5 @@ TYPED_TEST(LongKernelSquares, UpToAMillionTrianglesVerified) {
     EXPECT_LT(n, expected * 1.5) << at;
   }
 }
+
+} // namespace kernel_squares_test

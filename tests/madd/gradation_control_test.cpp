@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <string>
 
+namespace gradation_control_test {
 namespace {
 
 // Table 7.1's d (global gradation 1/29; d^2 and d^4, 1/841 and 1/707281, in tests/long): the
@@ -120,3 +121,5 @@ TEST(GradationControl, UnsplittableSubdomainIsNamedWithItsBounds) {
 }
 
 } // namespace
+
+} // namespace gradation_control_test

@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+namespace madd_decompose_test {
 namespace {
 
 using pdd::point;
@@ -311,3 +312,5 @@ TEST(MaddDecompose, PipeThousandWaysOnOneCore) {
 }
 
 } // namespace
+
+} // namespace madd_decompose_test

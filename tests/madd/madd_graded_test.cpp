@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+namespace madd_graded_test {
 namespace {
 
 using pdd::madd_leaf_view;
@@ -301,3 +302,5 @@ TEST(MaddGradedFiles, WeightFilesReadAndReportFileLine) {
 }
 
 } // namespace
+
+} // namespace madd_graded_test

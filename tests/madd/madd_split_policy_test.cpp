@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+namespace madd_split_policy_test {
 namespace {
 
 using pdd::madd_leaf_view;
@@ -126,3 +127,5 @@ TEST(MaddSplitPolicy, UnsplittableLeafNamesThePolicy) {
 }
 
 } // namespace
+
+} // namespace madd_split_policy_test

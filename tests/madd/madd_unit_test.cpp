@@ -20,6 +20,7 @@
 #include <set>
 #include <vector>
 
+namespace madd_unit_test {
 namespace {
 
 using pdd::point;
@@ -390,3 +391,5 @@ TEST(MaddRegistry, AssembleFindsInterfaces) {
 }
 
 } // namespace
+
+} // namespace madd_unit_test

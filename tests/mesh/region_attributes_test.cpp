@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <vector>
 
+namespace region_attributes_test {
 namespace {
 
 /// Two components of closed loops: the square [0, 1]^2 with a square hole and the square
@@ -102,3 +103,5 @@ TEST(TriangleNeighbors, SymmetricAndOpenOnlyOnTheBoundary) {
     }
   EXPECT_EQ(open, m.segments.size()); // every boundary edge is a segment edge, and no other
 }
+
+} // namespace region_attributes_test

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <vector>
 
+namespace statistics_sink_test {
 TEST(StatisticsSink, StreamedTotalsEqualTheMergedMeshStatistics) {
   const pdd::pslg g = pdd::test::star_polygon(12, 0.5); // input angles far below 60 deg
   pdd::generate_options o;
@@ -73,3 +74,5 @@ TEST(StatisticsSink, RepeatedIdReplacesItsPart) {
   EXPECT_DOUBLE_EQ(measured.shielding().min_angle_unshielded_deg, 45.0);
   EXPECT_EQ(measured.shielding().shielded_triangles, 0u);
 }
+
+} // namespace statistics_sink_test

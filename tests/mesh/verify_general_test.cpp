@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+namespace verify_general_test {
 namespace {
 
 pdd::pslg square() {
@@ -96,3 +97,5 @@ TEST(VerifyGeneral, SegmentsOutsideTheDomainAreNotAskedFor) {
 }
 
 } // namespace
+
+} // namespace verify_general_test

@@ -21,6 +21,7 @@
 #include <utility>
 #include <vector>
 
+namespace verify_test {
 namespace {
 
 using pdd::index_t;
@@ -318,3 +319,5 @@ TEST(Verify, DetectsMalformedTriangles) {
   EXPECT_EQ(r.orientation_violations, 2u);
   EXPECT_FALSE(r.ok());
 }
+
+} // namespace verify_test

@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+namespace meshing_test {
 namespace {
 
 using pdd::index_t;
@@ -365,3 +366,5 @@ TEST(Sinks, VtuDirectorySinkWritesEveryPiece) {
 }
 
 } // namespace
+
+} // namespace meshing_test

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+namespace executors_test {
 namespace {
 
 using pdd::index_t;
@@ -113,3 +114,5 @@ TEST(Executors, ConcurrencyCheckFailsForSequentialJobs) {
 }
 
 } // namespace
+
+} // namespace executors_test

@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <vector>
 
+namespace connectivity_test {
 namespace {
 
 using pdd::partition_graph;
@@ -204,3 +205,5 @@ TEST(PartitionQuality, MetisAndBoostOnGridsAndRandomGraphs) {
 #endif
 
 } // namespace
+
+} // namespace connectivity_test

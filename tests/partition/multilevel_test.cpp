@@ -3,12 +3,12 @@
 #include "partition_graphs.hpp"
 #include "test_support.hpp"
 
+#include <pdd/partition/bisection_metrics.hpp>
 #include <pdd/partition/detail/coarsen.hpp>
 #include <pdd/partition/detail/csr.hpp>
 #include <pdd/partition/detail/exact.hpp>
 #include <pdd/partition/detail/fm.hpp>
 #include <pdd/partition/detail/initial.hpp>
-#include <pdd/partition/bisection_metrics.hpp>
 
 #include <gtest/gtest.h>
 
@@ -16,6 +16,7 @@
 #include <random>
 #include <vector>
 
+namespace multilevel_test {
 namespace {
 
 using namespace pdd::detail;
@@ -163,3 +164,5 @@ TEST(Randomness, PermutationsArePortableAndComplete) {
 }
 
 } // namespace
+
+} // namespace multilevel_test

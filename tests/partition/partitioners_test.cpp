@@ -3,10 +3,10 @@
 #include "partition_graphs.hpp"
 #include "test_support.hpp"
 
-#include <pdd/partition/detail/metis_input.hpp>
 #include <pdd/partition/bisection_metrics.hpp>
 #include <pdd/partition/boost_partitioner.hpp>
 #include <pdd/partition/default_partitioner.hpp>
+#include <pdd/partition/detail/metis_input.hpp>
 #include <pdd/partition/metis.hpp>
 
 #include <gtest/gtest.h>
@@ -18,6 +18,7 @@
 #include <thread>
 #include <vector>
 
+namespace partitioners_test {
 namespace {
 
 using pdd::partition_graph;
@@ -278,3 +279,5 @@ TEST(BisectionMetrics, CutAndWeights) {
 }
 
 } // namespace
+
+} // namespace partitioners_test

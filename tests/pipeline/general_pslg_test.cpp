@@ -41,6 +41,7 @@
 #include <utility>
 #include <vector>
 
+namespace general_pslg_test {
 namespace {
 
 using pdd::pslg;
@@ -592,3 +593,5 @@ TEST(GeneralPslg, RandomMapsWithFeaturesAreDecoupledOrRefused) {
 }
 
 } // namespace
+
+} // namespace general_pslg_test

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+namespace generate_test {
 namespace {
 
 using pdd::test::bitwise_equal;
@@ -282,3 +283,5 @@ TEST(Generate, SharedDataDomains) {
 }
 
 } // namespace
+
+} // namespace generate_test

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+namespace geometric_pipeline_test {
 namespace {
 
 using pdd::point;
@@ -133,3 +134,5 @@ TEST(GeometricPipeline, RequestedNAndTheModes) {
 }
 
 } // namespace
+
+} // namespace geometric_pipeline_test

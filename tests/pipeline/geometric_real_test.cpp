@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <string>
 
+namespace geometric_real_test {
 namespace {
 
 struct run {
@@ -92,3 +93,5 @@ TEST(GeometricReal, LakeTexasAirfoilVerifiedAndThreadIndependent) {
 }
 
 } // namespace
+
+} // namespace geometric_real_test

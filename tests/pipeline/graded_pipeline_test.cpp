@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+namespace graded_pipeline_test {
 namespace {
 
 struct named_domain {
@@ -126,3 +127,5 @@ TEST(GradedPipeline, StatisticsOfAlgorithm71) {
 }
 
 } // namespace
+
+} // namespace graded_pipeline_test

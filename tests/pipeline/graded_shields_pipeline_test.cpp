@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+namespace graded_shields_pipeline_test {
 namespace {
 
 /// F = fine (1 + 30 u^2), u in [0, 1] across the bounding box, or F = fine everywhere.
@@ -101,3 +102,5 @@ TEST(GradedShieldsPipeline, KScaleStillFallsBackWithShields) {
 }
 
 } // namespace
+
+} // namespace graded_shields_pipeline_test

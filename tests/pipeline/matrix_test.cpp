@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+namespace matrix_test {
 namespace {
 
 using pdd::test::bitwise_equal;
@@ -76,3 +77,5 @@ TEST(UniformMatrix, VerifiedDeterministicAndSinkConsistent) {
     }
   }
 }
+
+} // namespace matrix_test

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+namespace native_kernel_test {
 namespace {
 
 using pdd::test::bitwise_equal;
@@ -74,3 +75,5 @@ TEST(NativeKernelPipeline, StepwisePipelineMatchesGenerate) {
 }
 
 } // namespace
+
+} // namespace native_kernel_test

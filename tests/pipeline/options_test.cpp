@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+namespace options_test {
 namespace {
 
 std::string rejection(const pdd::generate_options& o) {
@@ -58,3 +59,5 @@ TEST(GenerateOptions, ThePipelineChecksThem) {
 }
 
 } // namespace
+
+} // namespace options_test

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <string>
 
+namespace size_estimate_test {
 namespace {
 
 pdd::pslg polygon(std::initializer_list<pdd::point> pts) {
@@ -115,3 +116,5 @@ TEST(EstimateMeshSize, PipelineRefusesAboveMaxTrianglesWithTheCause) {
   EXPECT_GT(static_cast<double>(r.mesh.triangles.size()), e / 2.0);
   EXPECT_LT(static_cast<double>(r.mesh.triangles.size()), e * 2.0);
 }
+
+} // namespace size_estimate_test

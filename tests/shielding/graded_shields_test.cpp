@@ -15,6 +15,7 @@
 #include <numbers>
 #include <vector>
 
+namespace graded_shields_test {
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
@@ -87,3 +88,5 @@ TEST(GradedShields, PerSubdomainBounds) {
 }
 
 } // namespace
+
+} // namespace graded_shields_test

@@ -22,6 +22,7 @@
 #include <utility>
 #include <vector>
 
+namespace shielding_test {
 namespace {
 
 constexpr double deg = std::numbers::pi / 180.0;
@@ -284,3 +285,5 @@ TEST(ShieldMesh, SharedGeometries) {
   EXPECT_GT(decoupled, 0u) << "no decoupled mesh was compared";
   EXPECT_EQ(decoupled + decoupled_only, 3 * meshed);
 }
+
+} // namespace shielding_test

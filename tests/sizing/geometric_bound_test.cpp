@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+namespace geometric_bound_test {
 namespace {
 
 using pairs = std::vector<std::pair<std::size_t, std::size_t>>;
@@ -136,3 +137,5 @@ TEST(PiecewiseScaled, LocatesThePieceAndBounds) {
 }
 
 } // namespace
+
+} // namespace geometric_bound_test

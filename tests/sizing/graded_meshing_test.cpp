@@ -31,6 +31,7 @@
 #include <string>
 #include <vector>
 
+namespace graded_meshing_test {
 namespace {
 
 using pdd::point;
@@ -293,3 +294,5 @@ TEST(InverseAreaIntegral, MatchesTheClosedForm) {
 }
 
 } // namespace
+
+} // namespace graded_meshing_test

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+namespace sizing_fields_test {
 namespace {
 
 using pdd::bbox;
@@ -321,3 +322,5 @@ TEST(SizingFiles, AreaGrid) {
 }
 
 } // namespace
+
+} // namespace sizing_fields_test

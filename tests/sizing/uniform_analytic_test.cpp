@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+namespace uniform_analytic_test {
 TEST(Sizing, UniformAndAnalytic) {
   const pdd::uniform_sizing u{0.5};
   EXPECT_EQ(u.area_at({3, 4}), 0.5);
@@ -14,3 +15,5 @@ TEST(Sizing, UniformAndAnalytic) {
   EXPECT_EQ(a.area_at({2, 0}), 5.0);
   static_assert(pdd::SizingField<decltype(a)>);
 }
+
+} // namespace uniform_analytic_test

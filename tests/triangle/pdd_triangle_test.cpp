@@ -15,6 +15,7 @@
 #include <sstream>
 #include <string>
 
+namespace pdd_triangle_test {
 namespace fs = std::filesystem;
 
 namespace {
@@ -150,3 +151,5 @@ TEST(PddTriangle, RefusesWhatItCannotDo) {
   }
   EXPECT_FALSE(fs::exists(dir / "key.1.node")); // nothing written by a refused run
 }
+
+} // namespace pdd_triangle_test

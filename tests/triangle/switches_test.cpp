@@ -5,6 +5,7 @@
 
 #include <string>
 
+namespace switches_test {
 using pdd::triangle::parse_switches;
 using pdd::triangle::switch_error;
 
@@ -88,3 +89,5 @@ TEST(Switches, RefusesBadNumbers) {
   EXPECT_EQ(s.min_angle_deg, 30.0);
   EXPECT_EQ(s.max_area, 0.5);
 }
+
+} // namespace switches_test

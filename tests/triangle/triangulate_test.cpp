@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+namespace triangulate_test {
 namespace tri = pdd::triangle;
 
 namespace {
@@ -223,3 +224,5 @@ TEST(FileNames, TriangleRules) {
   EXPECT_THROW(tri::make_file_names("key.1.ele", s), tri::switch_error);
   EXPECT_THROW(tri::make_file_names("key.1.area", s), tri::switch_error);
 }
+
+} // namespace triangulate_test
