@@ -33,6 +33,7 @@
 #include <pdd/pipeline/detail/memory_check.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
+#include <pdd/pipeline/detail/record.hpp>
 #include <pdd/pipeline/detail/sizing_plan.hpp>
 #include <pdd/pipeline/detail/whole_domain.hpp>
 #include <pdd/pipeline/options.hpp>
@@ -48,7 +49,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -185,11 +185,7 @@ public:
       decoupled_decomposition_.shields.resize(shields.size());
       for (std::size_t s = 0; s < shields.size(); ++s)
         decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);
-      stats_.shielded_triangles = decoupled_decomposition_.num_shielded_triangles();
-      stats_.k = decoupled_decomposition_.k;
-      stats_.lfs_min = decoupled_decomposition_.lfs_min;
-      stats_.shortest_separator = decoupled_decomposition_.shortest_separator;
-      stats_.split_points = decoupled_decomposition_.num_split_points();
+      detail::record_path(decoupled_decomposition_, stats_);
       if (options_.subdomains == 0 &&
           static_cast<double>(stats_.split_points) >
               options_.planning.max_split_point_fraction * stats_.estimated_triangles)
@@ -219,18 +215,11 @@ public:
       timed.consume(0, std::move(m));
       timed.finish();
     } else {
-      meshing_statistics ms = mesh_subdomains(decoupled_decomposition_,
-                                              {options_.criteria, options_.decoupling.max_repairs,
-                                               options_.sizing, gradation_.expected_triangles},
-                                              mesher_, executor_, timed);
-      stats_.triangles = ms.triangles();
-      stats_.interface_splits = ms.interface_splits;
-      stats_.shield_splits = ms.shield_splits;
-      stats_.shielded_triangles = decoupled_decomposition_.num_shielded_triangles();
-      stats_.remeshed_subdomains = ms.remeshed_subdomains;
-      stats_.repair_rounds = ms.repair_rounds;
-      stats_.split_points = decoupled_decomposition_.num_split_points();
-      stats_.per_subdomain = std::move(ms.subdomains);
+      detail::record_meshing(mesh_subdomains(decoupled_decomposition_,
+                                             {options_.criteria, options_.decoupling.max_repairs,
+                                              options_.sizing, gradation_.expected_triangles},
+                                             mesher_, executor_, timed),
+                             decoupled_decomposition_, stats_);
     }
     stats_.timings.merge = timed.finish_seconds;
     stats_.timings.mesh = seconds_since(t0) - timed.finish_seconds;
@@ -271,21 +260,10 @@ private:
   /// Stage 1 of the graded method: Algorithm 7.1 (see generate_options::gradation) into
   /// decomposition_, with its measurements in gradation_ and the statistics.
   void decompose_graded(const madd_options& mo) {
-    gradation_options go = options_.gradation;
-    go.max_area = options_.criteria.max_area;
-    go.mean_area_fraction = mean_triangle_area_fraction;
-    if (options_.subdomains == 0)
-      go.max_subdomain_triangles = options_.planning.target_subdomain_triangles;
-    go.min_subdomains = stats_.subdomains;
-    go.max_subdomains = std::max(go.max_subdomains, go.min_subdomains);
+    const gradation_options go = detail::graded_stage_options(options_, stats_.subdomains);
     decomposition_ = gradation_controlled_decompose(domain_, options_.sizing, go, mo, partitioner_,
                                                     &gradation_, &stats_.decomposition);
-    stats_.gradation_controlled = true;
-    stats_.r1_max = gradation_.r1_max;
-    stats_.r2_max = gradation_.r2_max;
-    stats_.condition_1_unmet = gradation_.condition_1_unmet;
-    stats_.condition_2_unmet = gradation_.condition_2_unmet;
-    stats_.gradation_capped = gradation_.capped;
+    detail::record_gradation(gradation_, stats_);
   }
 
   /// The geometric path (detail::run_geometric): its decomposition and F replace MADD's and f.
@@ -306,17 +284,9 @@ private:
   double unshielded_k() const {
     if (options_.decoupling.k_override > 0.0) return options_.decoupling.k_override;
     const std::vector<double> lfs = detail::subdomain_lfs(decomposition_, executor_);
-    double shortest = std::numeric_limits<double>::infinity();
-    for (const subdomain& sd : decomposition_.subdomains)
-      for (std::size_t l = 0; l < sd.loops.size(); ++l)
-        for (std::size_t i = 0; i < sd.loops[l].size(); ++i)
-          if (sd.tags[l][i].type == edge_tag::kind::interface) {
-            const point a = decomposition_.vertices[sd.loops[l][i]];
-            const point b = decomposition_.vertices[sd.loops[l][(i + 1) % sd.loops[l].size()]];
-            shortest = std::min(shortest, std::hypot(b.x - a.x, b.y - a.y));
-          }
     return options_.decoupling.k_scale *
-           decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()), shortest,
+           decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()),
+                                detail::shortest_interface_edge(decomposition_),
                                 decoupling_criteria());
   }
 
@@ -398,19 +368,7 @@ private:
     if (!why.empty()) stats_.plan_reason = why;
     if (geometric_plan_) options_.sizing = user_sizing_;
     geometric_plan_ = false;
-    stats_.monolithic_fallback = true;
-    stats_.subdomains = 1;
-    stats_.graded_path = false;
-    stats_.subdomain_k.clear();
-    stats_.k_ratio_max = 0.0;
-    stats_.k = stats_.lfs_min = stats_.shortest_separator = 0.0;
-    stats_.split_points = 0;
-    stats_.shielded_triangles = 0;
-    stats_.decomposition = {};
-    stats_.lowered_k = 0;
-    stats_.gradation_controlled = stats_.gradation_capped = false;
-    stats_.r1_max = stats_.r2_max = 0.0;
-    stats_.condition_1_unmet = stats_.condition_2_unmet = 0;
+    detail::reset_decoupling_statistics(stats_);
     gradation_ = {};
     decomposition_ = {};
     decoupled_decomposition_ = {};
