@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -86,6 +88,120 @@ TEST(AnalyticSizing, GridRuleBoundsAMinimumBetweenNodes) {
       const point p{b.xmin + u(rng) * b.width(), b.ymin + u(rng) * b.height()};
       ASSERT_GE(bowl(p), rb.lo) << "case " << c;
       ASSERT_LE(bowl(p), rb.hi) << "case " << c;
+    }
+  }
+}
+
+// The grid rule cell by cell, written out directly: per cell, the corner range widened by
+// 2 (Dxx + Dyy) / 8, with Dxx, Dyy the largest |second differences| over the nodes of the cell
+// and of its 8 neighbours (the second difference of a boundary node taken at the nearest node
+// with two neighbours; an infinite corner: hi = inf, lo = half the smallest finite corner).
+pdd::sizing_bounds grid_rule_by_hand(const pdd::detail::sampled_grid& g) {
+  const auto at = [&](std::size_t i, std::size_t j) { return g.v[j * (g.nx + 1) + i]; };
+  const auto d2 = [&](std::size_t i, std::size_t j, bool along_x) {
+    const std::size_t n = along_x ? g.nx : g.ny;
+    if (n < 2) return 0.0;
+    const std::size_t c = std::clamp<std::size_t>(along_x ? i : j, 1, n - 1);
+    const double d = along_x ? at(c - 1, j) - 2 * at(c, j) + at(c + 1, j)
+                             : at(i, c - 1) - 2 * at(i, c) + at(i, c + 1);
+    return std::isfinite(d) ? std::abs(d) : 0.0;
+  };
+  pdd::sizing_bounds r{inf, 0.0};
+  for (std::size_t j = 0; j < std::max<std::size_t>(g.ny, 1); ++j)
+    for (std::size_t i = 0; i < std::max<std::size_t>(g.nx, 1); ++i) {
+      double lo = inf, hi = 0.0, dxx = 0.0, dyy = 0.0;
+      for (std::size_t c = 0; c < 4; ++c) {
+        const double v = at(std::min(i + (c & 1), g.nx), std::min(j + (c >> 1), g.ny));
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+      for (std::size_t jj = j > 0 ? j - 1 : 0; jj <= std::min(j + 2, g.ny); ++jj)
+        for (std::size_t ii = i > 0 ? i - 1 : 0; ii <= std::min(i + 2, g.nx); ++ii) {
+          dxx = std::max(dxx, d2(ii, jj, true));
+          dyy = std::max(dyy, d2(ii, jj, false));
+        }
+      if (std::isinf(lo)) {
+        r.hi = inf;
+        continue;
+      }
+      const double m = 2.0 * (dxx + dyy) / 8.0;
+      r.lo = std::min(r.lo, std::isinf(hi) ? 0.5 * lo : lo - m);
+      r.hi = std::max(r.hi, hi + m);
+    }
+  if (r.hi == 0.0) r.hi = inf;
+  return r;
+}
+
+TEST(AnalyticSizing, GridRuleMarginIsLocalToEachCellsNeighbourhood) {
+  // random grids with sharp local spikes (a margin window one node too small or too large
+  // changes the bound) and infinite nodes; the result must be the rule's, bitwise
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int c = 0; c < 2000; ++c) {
+    const std::size_t nx = rng() % 9, ny = rng() % 9;
+    pdd::detail::sampled_grid g{nx, ny, std::vector<double>((nx + 1) * (ny + 1))};
+    for (double& v : g.v)
+      v = rng() % 13 == 0 ? inf : (rng() % 5 == 0 ? 10.0 : 1.0) * u(rng);
+    const pdd::sizing_bounds want = grid_rule_by_hand(g), got = pdd::detail::grid_bounds(g);
+    ASSERT_EQ(got.lo, want.lo) << "case " << c << " (" << nx << " x " << ny << ")";
+    ASSERT_EQ(got.hi, want.hi) << "case " << c << " (" << nx << " x " << ny << ")";
+  }
+}
+
+double shallow_bowl(point p) {
+  return 1e-3 * (1.0 + bowl(p) - 1e-3);
+}
+
+TEST(AnalyticSizing, MeshScaleGridFollowsTheSmallestAreaAndStillBounds) {
+  std::atomic<long> calls{0};
+  const auto counted = [&calls](double (*f)(point)) {
+    return pdd::analytic_sizing{[&calls, f](point p) {
+      ++calls;
+      return f(p);
+    }};
+  };
+  const pdd::sizing_range_options mesh{.cells = 64, .mesh_resolution = 1.0};
+  // a coarse field on the unit box (m ~ 1: one triangle's edge spans the box): the 8 x 8 grid
+  const auto coarse = counted([](point p) { return 1.0 + 0.1 * p.x; });
+  const pdd::sizing_bounds c = pdd::sizing_range(coarse, bbox{0, 0, 1, 1}, mesh);
+  EXPECT_EQ(calls.load(), 81);
+  EXPECT_NEAR(c.lo, 1.0, 1e-12);
+  EXPECT_NEAR(c.hi, 1.1, 1e-12);
+  // m = 1e-3: ceil(1 / sqrt(1e-3)) = 32 cells a side
+  calls = 0;
+  const auto middle = counted([](point p) { return 1e-3 * (1.0 + p.x); });
+  const pdd::sizing_bounds r = pdd::sizing_range(middle, bbox{0, 0, 1, 1}, mesh);
+  EXPECT_EQ(calls.load(), 81 + 33 * 33);
+  EXPECT_NEAR(r.lo, 1e-3, 1e-15);
+  EXPECT_NEAR(r.hi, 2e-3, 1e-15);
+  // a field finer than 64 cells can resolve: the full grid
+  calls = 0;
+  const auto finest = counted([](point p) { return 1e-6 * (1.0 + p.x); });
+  (void)pdd::sizing_range(finest, bbox{0, 0, 1, 1}, mesh);
+  EXPECT_EQ(calls.load(), 81 + 65 * 65);
+  // no positive bound from the 8 x 8 grid (the bowl's margin there is 1/64): the full grid
+  calls = 0;
+  const auto fine = counted(&bowl);
+  EXPECT_LE(pdd::sizing_range(fine, bbox{0, 0, 1, 1}, mesh).lo, 1e-3);
+  EXPECT_EQ(calls.load(), 81 + 65 * 65);
+  // any_sizing and min_sizing pass the options on to the field they hold
+  calls = 0;
+  const pdd::any_sizing held{coarse};
+  (void)pdd::sizing_range(pdd::min_sizing(pdd::uniform_sizing{2.0}, held), bbox{0, 0, 1, 1}, mesh);
+  EXPECT_EQ(calls.load(), 81);
+  // the bound holds against dense sampling in random boxes (a bowl of minimum 1e-3 between
+  // the nodes, shallow enough for the mesh-scale grid to apply)
+  const pdd::analytic_sizing shallow{&shallow_bowl};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int k = 0; k < 200; ++k) {
+    const double x0 = u(rng), y0 = u(rng);
+    const bbox b{x0, y0, x0 + 0.5 * u(rng), y0 + 0.5 * u(rng)};
+    const pdd::sizing_bounds rb = pdd::sizing_range(shallow, b, mesh);
+    for (int s = 0; s < 200; ++s) {
+      const point p{b.xmin + u(rng) * b.width(), b.ymin + u(rng) * b.height()};
+      ASSERT_GE(shallow_bowl(p), rb.lo) << "box " << k;
+      ASSERT_LE(shallow_bowl(p), rb.hi) << "box " << k;
     }
   }
 }

@@ -36,10 +36,12 @@ public:
   double area_at(const point& p) const {
     return impl_ ? impl_->area_at(p) : std::numeric_limits<double>::infinity();
   }
-  sizing_bounds range(const bbox& b) const {
+  sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
+  /// range with pdd::sizing_range's options for the held field.
+  sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
     if (!impl_)
       return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
-    return impl_->range(b);
+    return impl_->range(b, o);
   }
   std::string kind() const { return impl_ ? impl_->kind() : "none"; }
 
@@ -47,14 +49,16 @@ private:
   struct base {
     virtual ~base() = default;
     virtual double area_at(const point& p) const = 0;
-    virtual sizing_bounds range(const bbox& b) const = 0;
+    virtual sizing_bounds range(const bbox& b, const sizing_range_options& o) const = 0;
     virtual std::string kind() const = 0;
   };
   template <class F>
   struct model final : base {
     explicit model(F f) : field(std::move(f)) {}
     double area_at(const point& p) const override { return static_cast<double>(field.area_at(p)); }
-    sizing_bounds range(const bbox& b) const override { return sizing_range(field, b); }
+    sizing_bounds range(const bbox& b, const sizing_range_options& o) const override {
+      return sizing_range(field, b, o);
+    }
     std::string kind() const override {
       if constexpr (requires { field.kind(); })
         return std::string(field.kind());

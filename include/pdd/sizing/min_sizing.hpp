@@ -27,12 +27,14 @@ requires(sizeof...(Fs) > 0) struct min_sizing {
     return std::apply(
         [&](const auto&... f) { return std::min({static_cast<double>(f.area_at(p))...}); }, fields);
   }
-  sizing_bounds range(const bbox& b) const {
+  sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
+  /// range with pdd::sizing_range's options for every field.
+  sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
     return std::apply(
         [&](const auto&... f) {
           sizing_bounds r{std::numeric_limits<double>::infinity(),
                           std::numeric_limits<double>::infinity()};
-          ((r = combine(r, sizing_range(f, b))), ...);
+          ((r = combine(r, sizing_range(f, b, o))), ...);
           return r;
         },
         fields);

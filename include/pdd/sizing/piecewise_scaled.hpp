@@ -57,8 +57,10 @@ public:
     return base_at(p) * s;
   }
 
-  sizing_bounds range(const bbox& b) const {
-    sizing_bounds base = data_->base.range(b);
+  sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
+  /// range with pdd::sizing_range's options for the base field.
+  sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
+    sizing_bounds base = data_->base.range(b, o);
     base.lo = std::min(base.lo, data_->max_area);
     base.hi = std::min(base.hi, data_->max_area);
     sizing_bounds s = data_->located.range(b);

@@ -5,6 +5,7 @@
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/sizing/detail/sampled_range.hpp>
 
+#include <concepts>
 #include <cstddef>
 
 namespace pdd {
@@ -13,6 +14,25 @@ namespace pdd {
 struct sizing_range_options {
   /// Cells per side of the first evaluation grid (refined x4 up to 1024 when needed).
   std::size_t cells = 64;
+  /// Mesh-scale resolution; 0 (the default): off. When > 0, a first 8 x 8 grid bounds the
+  /// field below by lo, and the grid then has ceil(mesh_resolution * L / sqrt(lo)) cells a side
+  /// (L the box's longer side), at least 8 and at most `cells`: cells no longer than
+  /// sqrt(lo) / mesh_resolution. At 1 they are shorter than the edges of the smallest
+  /// triangles the field asks for (a triangle of area >= lo/2 and angles >= 20.7 deg has no
+  /// edge below sqrt(lo)), so the grid still resolves F at the scale of the mesh that F
+  /// makes (the kernel itself sees F only at its triangles' points), while a box holding a
+  /// few hundred triangles costs ~100-1000 evaluations instead of 4225. Algorithm 7.1 measures
+  /// its leaves so (pdd::gradation_options); a field narrower than the mesh it asks for is
+  /// as invisible to it as to the kernel, and a decoupling path it breaks is still caught by
+  /// the kernel's run-time check of the interface pieces.
+  double mesh_resolution = 0.0;
+};
+
+/// A field that forwards range() to other fields (any_sizing, min_sizing) takes the options
+/// along as range(box, options).
+template <class F>
+concept RangeWithOptions = requires(const F& f, const bbox& b, const sizing_range_options& o) {
+  { f.range(b, o) } -> std::convertible_to<sizing_bounds>;
 };
 
 /// Bounds lo <= F(p) <= hi over the closed box `b` (the customisation point of the graded
@@ -32,16 +52,19 @@ struct sizing_range_options {
 /// smooth field whose curvature the grid resolves; it cannot see a feature narrower than a
 /// cell (no sampling can): give such a field a range() (e.g. analytic_sizing with a range
 /// function) or use a background mesh. When the margin leaves no positive lower bound the
-/// grid is refined x4 (to 1024 cells per side at most).
+/// grid is refined x4 (to 1024 cells per side at most). With o.mesh_resolution > 0 the first
+/// grid may be coarser than o.cells (see sizing_range_options::mesh_resolution).
 /// \tparam F a SizingField. \throws pdd::sizing_error for a value <= 0 or NaN at a node, or
 /// no positive lower bound at 1024 cells. An empty box gives {inf, inf}.
 /// Complexity: O(cells^2) evaluations for unbounded fields. Thread-safe when F is.
 template <SizingField F>
 sizing_bounds sizing_range(const F& f, const bbox& b, const sizing_range_options& o = {}) {
-  if constexpr (BoundedSizingField<F>)
+  if constexpr (RangeWithOptions<F>)
+    return f.range(b, o);
+  else if constexpr (BoundedSizingField<F>)
     return f.range(b);
   else
-    return detail::sampled_range(f, b, o.cells);
+    return detail::sampled_range(f, b, o.cells, o.mesh_resolution);
 }
 
 } // namespace pdd
