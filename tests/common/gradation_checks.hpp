@@ -24,14 +24,15 @@ inline pdd::bbox box_of(const pdd::decomposition& d, const pdd::subdomain& s) {
 }
 
 /// Asserts Conditions 1 and 2 on every subdomain and interface from pdd::sizing_range over
-/// each subdomain's box (independently of the report), and that the report agrees.
+/// each subdomain's box with Algorithm 7.1's grid rule (o.range; independently of the
+/// report), and that the report agrees.
 inline void expect_gradation_conditions(const pdd::decomposition& d, const pdd::any_sizing& f,
                                         const pdd::gradation_options& o,
                                         const pdd::gradation_report& rep) {
   ASSERT_EQ(rep.bounds.size(), d.subdomains.size());
   std::vector<double> lo;
   for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
-    const pdd::sizing_bounds b = pdd::sizing_range(f, box_of(d, d.subdomains[s]));
+    const pdd::sizing_bounds b = pdd::sizing_range(f, box_of(d, d.subdomains[s]), o.range);
     EXPECT_LE(b.hi, o.r1 * b.lo) << "Condition 1, subdomain " << s;
     EXPECT_EQ(b.lo, rep.bounds[s].lo);
     lo.push_back(b.lo);

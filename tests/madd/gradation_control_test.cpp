@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
 #include <string>
 
 namespace gradation_control_test {
@@ -100,6 +101,20 @@ TEST(GradationControl, RefusesBadBounds) {
       ADD_FAILURE() << r1 << " " << r2 << " accepted";
     } catch (const pdd::decomposition_error& e) {
       EXPECT_NE(std::string(e.what()).find("gradation_options: r"), std::string::npos) << e.what();
+    }
+  }
+  for (const pdd::sizing_range_options r :
+       {pdd::sizing_range_options{.cells = 1},
+        {.mesh_resolution = -1.0},
+        {.mesh_resolution = std::numeric_limits<double>::infinity()}}) {
+    pdd::gradation_options o;
+    o.range = r;
+    try {
+      (void)pdd::gradation_controlled_decompose(g, f, o);
+      ADD_FAILURE() << r.cells << " " << r.mesh_resolution << " accepted";
+    } catch (const pdd::decomposition_error& e) {
+      EXPECT_NE(std::string(e.what()).find("gradation_options: range"), std::string::npos)
+          << e.what();
     }
   }
 }

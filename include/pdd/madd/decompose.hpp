@@ -82,7 +82,10 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
   decomposition_statistics st;
   tbb::task_arena arena(o.threads == 0 ? tbb::task_arena::automatic : static_cast<int>(o.threads));
   for (;;) {
-    const std::optional<std::vector<std::size_t>> order = detail::next_round(state, o);
+    std::optional<std::vector<std::size_t>> order;
+    // in the arena: a split policy's own parallel work (Algorithm 7.1 measures its new leaves
+    // concurrently) runs on o.threads too
+    arena.execute([&] { order = detail::next_round(state, o); });
     if (!order) break; // done
     std::vector<detail::madd_split_result> res(order->size());
     const detail::range_function split_leaves = [&](std::size_t first, std::size_t last) {

@@ -155,6 +155,7 @@ decomposition gradation_controlled_decompose(const pslg& g, const any_sizing& fi
   check_gradation_options(o);
   auto state = std::make_shared<detail::gradation_policy_state>();
   state->measure = {field, o.max_area, o.mean_area_fraction};
+  state->measure.range_options = o.range;
   state->r1 = o.r1;
   state->r2 = o.r2;
   state->t = o.max_subdomain_triangles;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/errors.hpp>
+#include <pdd/sizing/sizing_range.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -40,11 +41,16 @@ struct gradation_options {
   /// The mean triangle area as a fraction of the bound (pdd::mean_triangle_area_fraction):
   /// expected triangles of D = integral over D of 1 / (fraction * min(max_area, F)).
   double mean_area_fraction = 0.656;
+  /// How m(D) and M(D) are taken of a field without range() (pdd::sizing_range's grid rule):
+  /// at most 64 cells a side, and no finer than the mesh the field asks for
+  /// (sizing_range_options::mesh_resolution = 1). MADD's leaves are small: a 64 x 64 grid over
+  /// a leaf expecting 1000 triangles cost four evaluations of F per triangle.
+  sizing_range_options range{.cells = 64, .mesh_resolution = 1.0};
 };
 
 /// \throws pdd::decomposition_error naming the field: R1 <= 1, R2 < R1 or R2 >= 3, T <= 0,
-/// a negative minimum, max_subdomains < max(1, min_subdomains), max_area <= 0 or the
-/// fraction outside (0, 1].
+/// a negative minimum, max_subdomains < max(1, min_subdomains), max_area <= 0, the
+/// fraction outside (0, 1], or a grid rule (range) with < 2 cells or a negative resolution.
 inline void check_gradation_options(const gradation_options& o) {
   const auto bad = [](const std::string& what) {
     throw decomposition_error("gradation_options: " + what);
@@ -60,6 +66,9 @@ inline void check_gradation_options(const gradation_options& o) {
   if (o.max_subdomains < std::max<std::size_t>(1, o.min_subdomains))
     bad("max_subdomains must be >= max(1, min_subdomains)");
   if (!(o.max_area > 0.0)) bad("max_area must be > 0");
+  if (o.range.cells < 2 || !(o.range.mesh_resolution >= 0.0) ||
+      !std::isfinite(o.range.mesh_resolution))
+    bad("range: cells must be >= 2 and mesh_resolution finite and >= 0");
   if (!(o.mean_area_fraction > 0.0 && o.mean_area_fraction <= 1.0))
     bad("mean_area_fraction must be in (0, 1]");
 }

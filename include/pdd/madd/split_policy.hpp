@@ -27,7 +27,8 @@ struct madd_leaf_view {
 /// madd_options::round_fraction of the highest, as the area does for the uniform MADD);
 /// priority <= 0: the leaf is acceptable as it is. The policy must be a pure function of the
 /// leaves (the result of pdd::decompose stays bitwise identical for every thread count) and is
-/// called from one thread at a time.
+/// called from one thread at a time, inside pdd::decompose's task arena (so work it runs in
+/// parallel there, like Algorithm 7.1's measuring of new leaves, uses madd_options::threads).
 using madd_split_policy = std::function<std::vector<double>(std::span<const madd_leaf_view>)>;
 
 } // namespace pdd

@@ -8,6 +8,7 @@
 #include <pdd/core/point.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/madd/split_policy.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>
 #include <pdd/sizing/sizing_range.hpp>
@@ -17,6 +18,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <limits>
 #include <span>
 #include <string>
@@ -43,7 +45,8 @@ struct leaf_measuring {
   any_sizing field;
   double max_area = std::numeric_limits<double>::infinity();
   double mean_area_fraction = 0.656;
-  std::size_t samples = 1024; ///< midpoint-rule pieces of the expected-triangles integral
+  std::size_t samples = 1024;           ///< midpoint-rule pieces of the expected-triangles integral
+  sizing_range_options range_options{}; ///< gradation_options::range
 
   /// \pre loops[0] is the outer loop (points, any orientation), loops[1..] the holes.
   leaf_measure operator()(std::span<const std::vector<point>> loops) const {
@@ -51,7 +54,7 @@ struct leaf_measuring {
     for (const point& p : loops.front())
       b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x),
            std::max(b.ymax, p.y)};
-    const sizing_bounds r = sizing_range(field, b);
+    const sizing_bounds r = sizing_range(field, b, range_options);
     pslg g;
     for (const auto& loop : loops)
       g.add_loop(loop);
@@ -154,15 +157,42 @@ struct gradation_policy_state {
     return k;
   }
 
-  leaf_measure measure_view(const madd_leaf_view& v) {
-    const std::string k = key_of(v.loops.front(), v.area);
-    if (const auto it = cache.find(k); it != cache.end()) return it->second;
-    std::vector<std::vector<point>> loops;
-    for (const auto& l : v.loops)
-      loops.emplace_back(l.begin(), l.end());
-    const leaf_measure m = measure(loops);
-    cache.emplace(k, m);
-    return m;
+  /// Measures every leaf of the call (last, last_index): the cached ones from the cache, the
+  /// new ones in parallel on the current task arena (decompose calls the policy inside its
+  /// arena, so madd_options::threads bounds it). Each measure is a pure function of the leaf,
+  /// so the result does not depend on the schedule; when several fail, the error of the first
+  /// leaf in order is thrown, as a sequential loop would.
+  void measure_leaves(std::span<const madd_leaf_view> leaves) {
+    std::vector<std::string> keys(leaves.size());
+    std::vector<std::size_t> fresh; // leaves to measure, the first of each key
+    std::unordered_map<std::string, std::size_t> fresh_key;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+      keys[i] = key_of(leaves[i].loops.front(), leaves[i].area);
+      if (!cache.contains(keys[i]) && fresh_key.emplace(keys[i], i).second) fresh.push_back(i);
+    }
+    std::vector<leaf_measure> measured(fresh.size());
+    std::vector<std::exception_ptr> failed(fresh.size());
+    parallel_ranges(fresh.size(), 1, [&](std::size_t first, std::size_t end) {
+      for (std::size_t k = first; k != end; ++k)
+        try {
+          std::vector<std::vector<point>> loops;
+          for (const auto& l : leaves[fresh[k]].loops)
+            loops.emplace_back(l.begin(), l.end());
+          measured[k] = measure(loops);
+        } catch (...) {
+          failed[k] = std::current_exception();
+        }
+    });
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
+    for (std::size_t k = 0; k < fresh.size(); ++k)
+      cache.emplace(keys[fresh[k]], measured[k]);
+    last.resize(leaves.size());
+    last_index.clear();
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+      last[i] = cache.at(keys[i]);
+      last_index.emplace(key_of(leaves[i].loops.front(), 0.0), i);
+    }
   }
 
   /// The split policy: leaves failing Condition 3 always (Condition 3 alone always ends:
@@ -172,12 +202,7 @@ struct gradation_policy_state {
   /// priority: the expected triangles ("the largest subdomain first", size measured as
   /// work; the smallest positive double where nothing is expected).
   std::vector<double> operator()(std::span<const madd_leaf_view> leaves) {
-    last.resize(leaves.size());
-    last_index.clear();
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-      last[i] = measure_view(leaves[i]);
-      last_index.emplace(key_of(leaves[i].loops.front(), 0.0), i);
-    }
+    measure_leaves(leaves);
     const auto pairs = shared_edge_pairs(
         leaves.size(), [&](std::size_t i) -> const auto& { return leaves[i].loops; });
     last_fail = failed_conditions(last, pairs, r1, r2, t);
