@@ -13,12 +13,16 @@
 # generate_options::max_split_point_fraction) on 1 thread with --compare-monolithic (the same
 # kernel on the whole domain with the same F), then on 2 threads.
 #   bash benchmarks/run_graded.sh [BUILD_DIR] [TRIANGLES] [FIELDS] [OUT.jsonl]
-# Defaults: build/release, 5e6, "d d2 d4 fs". Writes JSON lines to
+# Defaults: build/release, 5e6, "d d2 d4 fs". KERNEL=cgal|native picks the kernel of every run
+# (default cgal); RUNS lists the thread counts (default "1 2"; the first one also runs the
+# monolithic comparison). Writes JSON lines to
 # benchmarks/results/graded-<TRIANGLES>.jsonl and prints the markdown table.
 set -euo pipefail
 build=${1:-build/release}
 target=${2:-5000000}
 fields=${3:-"d d2 d4 fs"}
+kernel=${KERNEL:-cgal}
+runs=${RUNS:-"1 2"}
 exe="$build/examples/drivers/pdd-mesh"
 cmake --build "$build" --target pdd-mesh >/dev/null
 out=${4:-"benchmarks/results/graded-${target}.jsonl"}
@@ -27,7 +31,11 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 expr_of() { # field scale
   local d="(0.88/28+max(0,sqrt(x^2+y^2)-0.12))"
-  local rho="min((x+0.5)^2+(y+0.5)^2,x^2+(y+0.5)^2,(x-0.5)^2+(y+0.5)^2,(x+0.5)^2+y^2,x^2+y^2,(x-0.5)^2+y^2,(x+0.5)^2+(y-0.5)^2,x^2+(y-0.5)^2,(x-0.5)^2+(y-0.5)^2)"
+  # the squares of sums as products: muParser turns only a variable's power (x^2) into a
+  # product and evaluates (x+0.5)^2 with pow(), which made f_s 2.1x slower to evaluate (245
+  # against 115 ns) and had been 58 % of its run; the values are the same
+  local px="(x+0.5)*(x+0.5)" mx="(x-0.5)*(x-0.5)" py="(y+0.5)*(y+0.5)" my="(y-0.5)*(y-0.5)"
+  local rho="min($px+$py,x^2+$py,$mx+$py,$px+y^2,x^2+y^2,$mx+y^2,$px+$my,x^2+$my,$mx+$my)"
   case "$1" in
     d) echo "$2*$d" ;;
     d2) echo "$2*$d^2" ;;
@@ -57,29 +65,37 @@ PY
   e=$(expr_of "$f" "$s")
   run() { # threads [extra options]
     "$exe" examples/data/pipe.poly --sizing "$e" --r1 1.425 --r2 1.5 --subdomains 2 --threads "$1" \
-      --stats "$tmp/s.json" -q "${@:2}"
+      --kernel "$kernel" --stats "$tmp/s.json" -q "${@:2}"
     /usr/bin/python3 -c "
 import json; j = json.load(open('$tmp/s.json')); j['field'] = '$f'; j['expression'] = '''$e'''
 j.pop('subdomain_k', None); j.pop('angle_histogram_deg', None); print(json.dumps(j))" >> "$out"
     echo "$f threads=$1 done" >&2
   }
-  run 1 --compare-monolithic
-  run 2
+  first=1
+  for t in $runs; do
+    if [ "$first" = 1 ]; then run "$t" --compare-monolithic; else run "$t"; fi
+    first=0
+  done
 done
 /usr/bin/python3 - "$out" <<'PY'
 import json, sys
 rows = [json.loads(l) for l in open(sys.argv[1])]
+print('kernel:', rows[0]['kernel'] if rows else '-')
 print('| F | gradation | subdomains | r1_max | r2_max | lowered k | monolithic triangles | decoupled triangles | over-refinement % | monolithic s | decoupled s, 1 thread | 2 threads | speed-up vs monolithic (2 threads) | speed-up 1 -> 2 threads |')
 print('|---|---|---|---|---|---|---|---|---|---|---|---|---|---|')
+def total(field, threads):
+    r = next((r for r in rows if r['field'] == field and r['threads'] == threads), None)
+    return r['timings']['total'] if r else None
+fmt = lambda v: '-' if v is None else '%.1f' % v
 for one in rows:
     if 'over_refinement_pct' not in one:
         continue
-    two = next(r for r in rows if r['field'] == one['field'] and r is not one)
     mono_t = one['timings']['monolithic_comparison']
-    t1, t2 = one['timings']['total'], two['timings']['total']
+    t1, t2 = total(one['field'], 1), total(one['field'], 2)
     mono = one['monolithic_triangles']
-    print('| %s | 1/%.0f | %d | %.3f | %.3f | %d | %.0f | %d | %.2f | %.1f | %.1f | %.1f | %.2f | %.2f |' % (
+    print('| %s | 1/%.0f | %d | %.3f | %.3f | %d | %.0f | %d | %.2f | %.1f | %s | %s | %s | %s |' % (
         one['field'], one['gradation'], one['subdomains'], one.get('r1_max', 0), one.get('r2_max', 0),
-        one.get('lowered_k', 0), mono, one['triangles'], one['over_refinement_pct'], mono_t, t1, t2,
-        mono_t / t2, t1 / t2))
+        one.get('lowered_k', 0), mono, one['triangles'], one['over_refinement_pct'], mono_t, fmt(t1),
+        fmt(t2), '-' if t2 is None else '%.2f' % (mono_t / t2),
+        '-' if None in (t1, t2) else '%.2f' % (t1 / t2)))
 PY
