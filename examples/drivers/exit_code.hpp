@@ -12,12 +12,22 @@
 namespace pdd::drivers {
 
 /// Exit codes of the pdd-* programs (README, "Exit codes").
-enum exit_code : int { ok = 0, bad_input = 1, usage = 2, verification_failed = 3, internal = 4 };
+enum exit_code : int {
+  ok = 0,
+  bad_input = 1,
+  usage = 2,
+  verification_failed = 3,
+  internal = 4,
+  unresolvable = 5 ///< valid input beyond the kernel's double precision (a sub-degree angle)
+};
 
-/// The exit code for a pdd error: internal for a broken invariant (pdd::internal_error) or a
-/// kernel failure (pdd::meshing_error), which are bugs and never bad input; bad_input for
-/// everything else (files, geometry, decomposition, decoupling, limits). Complexity O(1).
+/// The exit code for a pdd error: unresolvable for a valid input the kernel cannot resolve in
+/// double precision (pdd::unresolvable_input_error: an input limit, not a bug); internal for a
+/// broken invariant (pdd::internal_error) or any other kernel failure (pdd::meshing_error),
+/// which are bugs and never bad input; bad_input for everything else (files, geometry,
+/// decomposition, decoupling, limits). Complexity O(1).
 inline exit_code exit_code_for(const pdd::error& e) noexcept {
+  if (dynamic_cast<const unresolvable_input_error*>(&e)) return unresolvable;
   if (dynamic_cast<const internal_error*>(&e) || dynamic_cast<const meshing_error*>(&e))
     return internal;
   return bad_input;
@@ -27,7 +37,8 @@ inline exit_code exit_code_for(const pdd::error& e) noexcept {
 /// they are about (other errors name their file, or none applies).
 inline std::string describe(const pdd::error& e, const std::string& input) {
   if (dynamic_cast<const geometry_error*>(&e)) return input + ": " + e.what();
-  if (dynamic_cast<const decomposition_error*>(&e)) return input + ": cannot decompose: " + e.what();
+  if (dynamic_cast<const decomposition_error*>(&e))
+    return input + ": cannot decompose: " + e.what();
   return e.what();
 }
 

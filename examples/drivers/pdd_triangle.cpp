@@ -28,7 +28,7 @@
 
 namespace {
 
-constexpr int ok = 0, bad_input = 1, usage = 2, internal = 4;
+constexpr int ok = 0, bad_input = 1, usage = 2, internal = 4, unresolvable = 5;
 
 struct cli_options {
   std::string input;
@@ -170,6 +170,8 @@ int run_reporting_errors(const cli_options& o) {
     return bad_input;
   } catch (const pdd::internal_error& e) {
     return fail("internal error", e, internal);
+  } catch (const pdd::unresolvable_input_error& e) { // an input limit, not a bug
+    return fail("error", e, unresolvable);
   } catch (const pdd::meshing_error& e) {
     return fail("internal error", e, internal);
   } catch (const pdd::error& e) { // limits, decomposition, files that cannot be read or written

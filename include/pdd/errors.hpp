@@ -67,6 +67,27 @@ private:
   long long subdomain_;
 };
 
+/// A valid input beyond what the kernel can resolve in double precision: two constraints at
+/// an angle of a fraction of a degree (a split point rounds to beyond the neighbouring
+/// constraint), or bounds asking for pieces of a segment below the floating-point resolution.
+/// An input limit, not a bug: the drivers exit with their own code for it. A meshing_error
+/// (subdomain() names where), so every handler of kernel failures still sees it; wrappers
+/// that add the subdomain keep the type (pdd::rethrow_for_subdomain).
+class unresolvable_input_error : public meshing_error {
+public:
+  using meshing_error::meshing_error;
+};
+
+/// Rethrows the meshing_error `e` for subdomain s, keeping its class (an
+/// unresolvable_input_error stays one); as it is when it already names s.
+/// \pre called while `e` is being handled (a catch block).
+[[noreturn]] inline void rethrow_for_subdomain(const meshing_error& e, long long s) {
+  if (e.subdomain() == s) throw;
+  if (dynamic_cast<const unresolvable_input_error*>(&e) != nullptr)
+    throw unresolvable_input_error(s, e.what());
+  throw meshing_error(s, e.what());
+}
+
 /// A resource limit (memory estimate, refinement budget) would be exceeded.
 class limit_error : public error {
 public:

@@ -257,8 +257,8 @@ inline pslg random_map_with_features(std::uint32_t seed, int n = 6, int features
 
 /// An arrangement of random_arrangement(7) before its 10 deg filter, by Triangle's rule: two
 /// segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square; the CGAL
-/// kernel refuses it with a meshing_error (the rounded split point falls beyond the other
-/// segment). The kernel's test and the fuzz target's seed corpus use it.
+/// kernel refuses it with an unresolvable_input_error (the rounded split point falls beyond the
+/// other segment). The kernel's test and the fuzz target's seed corpus use it.
 inline pslg sub_degree_angle_domain() {
   std::istringstream in(R"(# pdd .poly: vertices <#> <dim> <#attributes> <#markers>
 21 2 0 1

@@ -6,6 +6,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace exit_code_test {
 namespace {
@@ -21,6 +22,29 @@ TEST(ExitCode, EveryErrorType) {
   EXPECT_EQ(exit_code_for(pdd::error("cannot write")), pdd::drivers::bad_input);
   EXPECT_EQ(exit_code_for(pdd::meshing_error(3, "kernel")), pdd::drivers::internal);
   EXPECT_EQ(exit_code_for(pdd::internal_error("invariant")), pdd::drivers::internal);
+  EXPECT_EQ(exit_code_for(pdd::unresolvable_input_error(3, "sub-degree")),
+            pdd::drivers::unresolvable);
+}
+
+// A subdomain wrapper keeps an unresolvable_input_error's class and names the subdomain; any
+// other meshing_error stays one.
+TEST(ExitCode, RethrowForSubdomainKeepsTheClass) {
+  const auto wrapped = [](const auto& thrown) -> std::pair<int, std::string> {
+    try {
+      try {
+        throw thrown; // by its own class
+      } catch (const pdd::meshing_error& e) {
+        pdd::rethrow_for_subdomain(e, 7);
+      }
+    } catch (const pdd::meshing_error& e) {
+      return {exit_code_for(e), e.what()};
+    }
+    return {};
+  };
+  EXPECT_EQ(wrapped(pdd::unresolvable_input_error(-1, "angle")),
+            std::make_pair(5, std::string("subdomain 7: angle")));
+  EXPECT_EQ(wrapped(pdd::meshing_error(-1, "kernel")),
+            std::make_pair(4, std::string("subdomain 7: kernel")));
 }
 
 TEST(ExitCode, ReportsAndReturns) {
@@ -40,6 +64,8 @@ TEST(ExitCode, ReportsAndReturns) {
             std::make_pair(1, std::string("pdd-x: error: a.poly:3: bad\n")));
   EXPECT_EQ(run([]() -> int { throw pdd::meshing_error(5, "failed"); }),
             std::make_pair(4, std::string("pdd-x: internal error: subdomain 5: failed\n")));
+  EXPECT_EQ(run([]() -> int { throw pdd::unresolvable_input_error(2, "angle"); }),
+            std::make_pair(5, std::string("pdd-x: error: subdomain 2: angle\n")));
   EXPECT_EQ(run([]() -> int { throw std::logic_error("oops"); }),
             std::make_pair(4, std::string("pdd-x: internal error: oops\n")));
 }

@@ -26,13 +26,14 @@
 // Refusals of bad input are passes: pdd::input_error (parser), pdd::geometry_error (validate,
 // shields), pdd::decomposition_error (MADD cannot split the domain as asked), pdd::limit_error,
 // and pdd::error from the parser (a .poly with 0 vertices names a .node file that cannot be
-// read). One more, on general domains only: the CGAL kernel's documented pdd::meshing_error for
-// two segments at a sub-degree angle ("... cannot be split: its rounded split point falls beyond
-// a neighbouring segment", tests/kernels/triangle_rule_test.cpp UnresolvableAngleIsAMeshingError)
-// passes when that is its message and two of the input's segments do meet at a shared vertex at
-// less than 1 deg; the same error on a domain of closed loops, or without such an angle, is a
-// finding. Everything else aborts, and libFuzzer keeps the input: any other exception
-// (internal_error, meshing_error, decoupling_error, std::exception), a crash, a sanitizer report,
+// read). One more, on general domains only: the CGAL kernel's documented
+// pdd::unresolvable_input_error for two segments at a sub-degree angle ("... cannot be split:
+// its rounded split point falls beyond a neighbouring segment",
+// tests/kernels/triangle_rule_test.cpp UnresolvableAngleIsAnUnresolvableInputError) passes when
+// that is its message and two of the input's segments do meet at a shared vertex at less than
+// 1 deg; the same error on a domain of closed loops, or without such an angle, is a finding.
+// Everything else aborts, and libFuzzer keeps the input: any other exception (internal_error,
+// meshing_error, decoupling_error, std::exception), a crash, a sanitizer report,
 // or a mesh that fails verification.
 //
 // The area bound is A = area / d, d in [8, 4096] (log-uniform) taken from a hash of the input's
@@ -257,7 +258,7 @@ void check_mesh(const pdd::triangle_mesh& m, const fuzz_domain& d, const pdd::me
 
 /// True for the CGAL kernel's documented refusal of a general domain with two segments at a
 /// sub-degree angle (see the file comment).
-bool unresolvable_angle_refusal(const pdd::meshing_error& e, const fuzz_domain& d) {
+bool unresolvable_angle_refusal(const pdd::unresolvable_input_error& e, const fuzz_domain& d) {
   const std::string what = e.what();
   return d.general &&
          what.find("cannot be split: its rounded split point falls beyond a neighbouring "
@@ -277,7 +278,7 @@ void mesh_and_check(const fuzz_domain& d, const pdd::mesh_criteria& c, std::size
   } catch (const pdd::geometry_error&) {
   } catch (const pdd::decomposition_error&) {
   } catch (const pdd::limit_error&) {
-  } catch (const pdd::meshing_error& e) {
+  } catch (const pdd::unresolvable_input_error& e) {
     if (n != 1 || !unresolvable_angle_refusal(e, d))
       finding("N = " + std::to_string(n) + ": " + e.what());
     ++counts.angle_refusals;

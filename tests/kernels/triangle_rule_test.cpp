@@ -1,6 +1,7 @@
 // pdd::cgal::mesher on domains of Triangle's rule (pslg::rule, issue 13): internal constraints
 // keep both faces, isolated vertices become mesh vertices, and a constraint pair at an angle
 // too small for double precision is refused with a meshing_error, never a corrupt triangulation.
+#include <pdd/generate.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -51,13 +52,24 @@ TEST(CgalMesherTriangleRule, InternalConstraintKeepsBothFaces) {
   EXPECT_TRUE(used);
 }
 
-TEST(CgalMesherTriangleRule, UnresolvableAngleIsAMeshingError) {
-  // two segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square
+TEST(CgalMesherTriangleRule, UnresolvableAngleIsAnUnresolvableInputError) {
+  // two segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square: an
+  // input limit (its own class and exit code), not a kernel failure
   const pdd::pslg g = pdd::test::sub_degree_angle_domain();
   try {
     (void)pdd::cgal::mesher{}.mesh(g, criteria(0.005), pdd::uniform_sizing{});
     ADD_FAILURE() << "meshed";
-  } catch (const pdd::meshing_error& e) {
+  } catch (const pdd::unresolvable_input_error& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot be split"), std::string::npos) << e.what();
+    EXPECT_EQ(e.subdomain(), -1);
+  }
+  // through pdd::generate (the whole domain, subdomain 0): the class is kept
+  pdd::generate_options o;
+  o.criteria = criteria(0.005);
+  try {
+    (void)pdd::generate(g, o);
+    ADD_FAILURE() << "meshed";
+  } catch (const pdd::unresolvable_input_error& e) {
     EXPECT_NE(std::string(e.what()).find("cannot be split"), std::string::npos) << e.what();
   }
 }

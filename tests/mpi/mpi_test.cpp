@@ -210,11 +210,13 @@ TEST(MpiPipe, BinaryPiecesBitwiseAsThreaded) {
   }
 }
 
-/// pdd_mpi_throwing_mesher on the key, N = 16, into dir, failing on subdomain `fail`.
-pdd::test::command_result run_throwing(int ranks, const fs::path& dir, int fail) {
+/// pdd_mpi_throwing_mesher on the key, N = 16, into dir, failing on subdomain `fail` (with
+/// `kind` "unresolvable": by a pdd::unresolvable_input_error).
+pdd::test::command_result run_throwing(int ranks, const fs::path& dir, int fail,
+                                       const std::string& kind = "") {
   return run_command(mpiexec(ranks) + PDD_MPI_THROWING_MESHER_EXE + " " +
                      shell_quoted(data / "key.poly") + " 2e-3 16 " + shell_quoted(dir) + " " +
-                     std::to_string(fail));
+                     std::to_string(fail) + (kind.empty() ? "" : " " + kind));
 }
 
 std::size_t count(const std::string& text, const std::string& what) {
@@ -237,6 +239,21 @@ TEST(MpiFailures, ThrowingKernelEndsEveryRankWithNoOutput) {
           << r.output;
       EXPECT_TRUE(pdd::test::dir_entries(dir / "out").empty()) << what << ": files left behind";
     }
+  }
+}
+
+// An input limit of the kernel keeps its class across ranks (its own exit code, 5).
+TEST(MpiFailures, UnresolvableInputKeepsItsClassAcrossRanks) {
+  for (const int fail : {0, 9}) {
+    const std::string what = "P=3 fail=" + std::to_string(fail);
+    const fs::path dir = pdd::test::fresh_dir("unresolvable");
+    const auto r = run_throwing(3, dir / "out", fail, "unresolvable");
+    EXPECT_EQ(r.code, 5) << what << "\n" << r.output;
+    EXPECT_EQ(
+        count(r.output, "error: subdomain " + std::to_string(fail) + ": injected input limit"), 1u)
+        << what << "\n"
+        << r.output;
+    EXPECT_TRUE(pdd::test::dir_entries(dir / "out").empty()) << what << ": files left behind";
   }
 }
 

@@ -1,9 +1,11 @@
-// pdd_mpi_throwing_mesher INPUT.poly MAX_AREA N DIR FAIL_ID: an MPI program over the library API
-// (not a driver): every rank builds the decoupled decomposition of INPUT.poly with N
-// subdomains, and pdd::mpi::mesh_subdomains meshes it into DIR (pdd::mpi::vtu_directory_sink)
-// with a kernel that throws on subdomain FAIL_ID (-1: never). Rank 0 prints the error, or the
-// statistics; every rank checks that all ranks report the same statistics. Exit code: 0; 4 for a
-// meshing error; 1 when the statistics disagree or are inconsistent. Run by
+// pdd_mpi_throwing_mesher INPUT.poly MAX_AREA N DIR FAIL_ID [unresolvable]: an MPI program over
+// the library API (not a driver): every rank builds the decoupled decomposition of INPUT.poly
+// with N subdomains, and pdd::mpi::mesh_subdomains meshes it into DIR
+// (pdd::mpi::vtu_directory_sink) with a kernel that throws on subdomain FAIL_ID (-1: never): a
+// std::runtime_error, or with `unresolvable` a pdd::unresolvable_input_error (whose class must
+// cross the ranks). Rank 0 prints the error, or the statistics; every rank checks that all ranks
+// report the same statistics. Exit code: 0; 4 for a meshing error; 5 for an
+// unresolvable_input_error; 1 when the statistics disagree or are inconsistent. Run by
 // tests/mpi/mpi_test.cpp under mpiexec.
 #include <pdd/io/poly.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
@@ -24,9 +26,13 @@ namespace {
 /// The CGAL kernel, except on the one subdomain whose input vertices are `trigger`.
 struct throwing_mesher {
   std::vector<pdd::point> trigger;
+  bool unresolvable = false; ///< throw pdd::unresolvable_input_error, not std::runtime_error
   template <pdd::SizingField S>
   pdd::mesher_result mesh(const pdd::pslg& d, const pdd::mesh_criteria& c, const S& s) const {
-    if (!trigger.empty() && d.vertices == trigger) throw std::runtime_error("injected failure");
+    if (!trigger.empty() && d.vertices == trigger) {
+      if (unresolvable) throw pdd::unresolvable_input_error(-1, "injected input limit");
+      throw std::runtime_error("injected failure");
+    }
     return pdd::cgal::mesher{}.mesh(d, c, s);
   }
 };
@@ -61,6 +67,7 @@ int run(char** argv, int rank) {
   pdd::decoupled_decomposition& dd = path.decoupled();
   const long long fail = std::stoll(argv[5]);
   throwing_mesher mesher;
+  mesher.unresolvable = argv[6] != nullptr && std::string(argv[6]) == "unresolvable";
   if (fail >= 0) mesher.trigger = dd.input(static_cast<pdd::index_t>(fail)).domain.vertices;
   pdd::mpi::vtu_directory_sink files(MPI_COMM_WORLD, argv[4]);
   try {
@@ -81,15 +88,15 @@ int main(int argc, char** argv) {
   int rank = 0;
   MPI_Comm_rank(MPI_COMM_WORLD, &rank);
   int rc = 2;
-  if (argc == 6) {
+  if (argc == 6 || argc == 7) {
     try {
       rc = run(argv, rank);
     } catch (const pdd::meshing_error& e) {
       if (rank == 0) std::fprintf(stderr, "error: %s\n", e.what());
-      rc = 4;
+      rc = dynamic_cast<const pdd::unresolvable_input_error*>(&e) ? 5 : 4;
     }
   } else if (rank == 0) {
-    std::fprintf(stderr, "usage: %s INPUT.poly MAX_AREA N DIR FAIL_ID\n", argv[0]);
+    std::fprintf(stderr, "usage: %s INPUT.poly MAX_AREA N DIR FAIL_ID [unresolvable]\n", argv[0]);
   }
   MPI_Finalize();
   return rc;

@@ -93,8 +93,7 @@ subdomain_meshing mesh_subdomain(const decoupled_decomposition& dd, index_t s,
     out.mesh = std::move(r.mesh);
     return out;
   } catch (const meshing_error& e) {
-    if (e.subdomain() == static_cast<long long>(s)) throw;
-    throw meshing_error(s, e.what());
+    rethrow_for_subdomain(e, static_cast<long long>(s));
   } catch (const std::exception& e) {
     throw meshing_error(s, e.what());
   }

@@ -28,8 +28,7 @@ template <DelaunayMesher M, MeshSink S>
 class meshing_run {
 public:
   meshing_run(decoupled_decomposition& dd, const meshing_options& options, const M& mesher, S& sink)
-      : work(expected_work(dd, options)), dd_(dd), options_(options), mesher_(mesher),
-        sink_(sink) {
+      : work(expected_work(dd, options)), dd_(dd), options_(options), mesher_(mesher), sink_(sink) {
     stats.subdomains.resize(work.size());
     for (index_t s = 0; s < work.size(); ++s)
       stats.subdomains[s].area = subdomain_area(dd.parts, s);
@@ -48,8 +47,7 @@ public:
     try {
       sink_.consume(s, std::move(r.mesh));
     } catch (const meshing_error& e) {
-      if (e.subdomain() == static_cast<long long>(s)) throw;
-      throw meshing_error(s, e.what());
+      rethrow_for_subdomain(e, static_cast<long long>(s));
     } catch (const std::exception& e) {
       throw meshing_error(s, e.what());
     }

@@ -103,8 +103,7 @@ private:
     try {
       sink_.consume(s, std::move(mesh));
     } catch (const meshing_error& e) {
-      if (e.subdomain() == static_cast<long long>(s)) throw;
-      throw meshing_error(s, e.what());
+      rethrow_for_subdomain(e, static_cast<long long>(s));
     } catch (const std::exception& e) {
       throw meshing_error(s, e.what());
     }

@@ -141,6 +141,7 @@ enum class error_kind : std::int32_t {
   decomposition,
   decoupling,
   meshing,
+  unresolvable, ///< pdd::unresolvable_input_error (a meshing_error with its own exit code)
   limit,
   sizing,
   internal,
@@ -159,6 +160,8 @@ inline wire_error encode(const std::exception_ptr& e) {
   if (!e) return {};
   try {
     std::rethrow_exception(e);
+  } catch (const unresolvable_input_error& m) {
+    return {error_kind::unresolvable, m.subdomain(), m.what()};
   } catch (const meshing_error& m) {
     return {error_kind::meshing, m.subdomain(), m.what()};
   } catch (const geometry_error& g) {
@@ -200,10 +203,13 @@ inline wire_error get_error(byte_reader& r) {
 /// ids other than a meshing error's subdomain are not carried).
 [[noreturn]] inline void rethrow(const wire_error& e) {
   switch (e.kind) {
-  case error_kind::meshing: {
+  case error_kind::meshing:
+  case error_kind::unresolvable: {
     const std::string prefix = "subdomain " + std::to_string(e.subdomain) + ": ";
     const bool prefixed = e.subdomain >= 0 && e.message.rfind(prefix, 0) == 0;
-    throw meshing_error(e.subdomain, prefixed ? e.message.substr(prefix.size()) : e.message);
+    const std::string message = prefixed ? e.message.substr(prefix.size()) : e.message;
+    if (e.kind == error_kind::unresolvable) throw unresolvable_input_error(e.subdomain, message);
+    throw meshing_error(e.subdomain, message);
   }
   case error_kind::geometry:
     throw geometry_error(e.message);

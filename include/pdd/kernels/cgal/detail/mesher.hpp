@@ -116,7 +116,7 @@ public:
   /// circumcircle holds p), and when the first does not, p lies in the second. With two
   /// constraints at a tiny angle (a fraction of a degree) the rounded split point of one can
   /// fall beyond the other, and the zone would corrupt the triangulation.
-  /// \throws meshing_error naming the segment's endpoints.
+  /// \throws unresolvable_input_error naming the segment's endpoints.
   template <class Edge>
   auto conflicts_zone_impl(const typename Tr::Point& p, Edge edge) {
     typename Tr::Locate_type type{};
@@ -133,7 +133,7 @@ public:
            << f->vertex(Tr::ccw(edge.second))->point()
            << " cannot be split: its rounded split point falls beyond a neighbouring segment (an "
               "input angle too small to resolve in double precision)";
-      throw meshing_error(-1, what.str());
+      throw unresolvable_input_error(-1, what.str());
     }
     return super::conflicts_zone_impl(p, edge);
   }

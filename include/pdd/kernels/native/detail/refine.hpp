@@ -164,9 +164,11 @@ private:
     const index_t seg = ids_.of_edge(a, b);
     if ((m.x == tr_.pts[a].x && m.y == tr_.pts[a].y) ||
         (m.x == tr_.pts[b].x && m.y == tr_.pts[b].y))
-      throw meshing_error(-1, "segment " + std::to_string(seg) +
-                                  " would be split into pieces below the floating-point "
-                                  "resolution (the bounds ask for too fine a mesh)");
+      throw unresolvable_input_error(-1, "segment " + std::to_string(seg) +
+                                             " would be split into pieces below the "
+                                             "floating-point resolution (the bounds ask for too "
+                                             "fine a mesh, or two segments meet at too small an "
+                                             "angle)");
     cav_.grow(tr_, m, {t, ref_tri(tr_.adj[t][i])}, r);
     if (!cav_.make_star_shaped(tr_, m, 2))
       throw meshing_error(-1, "internal error: split point of segment " + std::to_string(seg) +
