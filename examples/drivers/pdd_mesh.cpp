@@ -229,7 +229,7 @@ void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
     pdd::check_quality(*r.mesh, r.domain, r.options.criteria, r.sizing);
     bar.stage("statistics");
     r.st = pdd::compute_statistics(*r.mesh, r.sizing);
-    r.sst = pdd::compute_shielding_statistics(*r.mesh, r.domain);
+    r.sst = pdd::shielding_statistics_of(*r.mesh, pdd::find_small_input_angles(r.domain), *r.st);
   }
   if (!o.verify) return;
   bar.stage("verifying");

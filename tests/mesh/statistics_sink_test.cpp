@@ -8,6 +8,8 @@
 #include "test_support.hpp"
 
 #include <cstring>
+#include <string>
+#include <utility>
 #include <vector>
 
 namespace statistics_sink_test {
@@ -50,6 +52,41 @@ TEST(StatisticsSink, StreamedTotalsEqualTheMergedMeshStatistics) {
   }
   // combined in id order: the same bits for any thread count
   EXPECT_EQ(std::memcmp(&totals[0].area, &totals[1].area, sizeof(double)), 0);
+}
+
+// Without small input angles the shielding statistics come from the mesh statistics, with
+// no pass of their own: bitwise those of compute_shielding_statistics, on meshes with ties
+// (a uniform grid-like square) and without (random area bounds, the pipe's holes).
+TEST(StatisticsSink, ShieldingStatisticsFromTheMeshStatisticsAreExact) {
+  pdd::pslg square;
+  square.add_loop(std::vector<pdd::point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 1);
+  const pdd::pslg star = pdd::test::star_polygon(12, 0.5);
+  for (const auto& [g, small] : {std::pair<const pdd::pslg*, bool>{&square, false},
+                                 std::pair<const pdd::pslg*, bool>{&star, true}})
+    for (const double area : {0.5, 1e-2, 3e-3, 7e-4, 1e-4}) {
+      pdd::generate_options o;
+      o.criteria.max_area = area;
+      o.subdomains = 1;
+      const pdd::generate_result r = pdd::generate(*g, o);
+      const pdd::small_input_angles angles = pdd::find_small_input_angles(*g);
+      ASSERT_EQ(angles.apexes.empty(), !small);
+      const pdd::shielding_statistics want = pdd::compute_shielding_statistics(r.mesh, angles);
+      const pdd::shielding_statistics got =
+          pdd::shielding_statistics_of(r.mesh, angles, pdd::compute_statistics(r.mesh));
+      const std::string at = "area " + std::to_string(area) + (small ? " star" : " square");
+      EXPECT_EQ(got.shielded_triangles, want.shielded_triangles) << at;
+      EXPECT_EQ(got.min_angle_unshielded_deg, want.min_angle_unshielded_deg) << at;
+      EXPECT_EQ(got.max_ratio_unshielded, want.max_ratio_unshielded) << at;
+      EXPECT_EQ(got.min_input_angle_deg, want.min_input_angle_deg) << at;
+      EXPECT_EQ(got.max_ratio_shielded, want.max_ratio_shielded) << at;
+      EXPECT_EQ(got.max_shield_angle_error_deg, want.max_shield_angle_error_deg) << at;
+    }
+  // an empty mesh
+  const pdd::small_input_angles none = pdd::find_small_input_angles(square);
+  const pdd::shielding_statistics empty =
+      pdd::shielding_statistics_of({}, none, pdd::compute_statistics(pdd::triangle_mesh{}));
+  EXPECT_EQ(empty.min_angle_unshielded_deg, 0.0);
+  EXPECT_EQ(empty.max_ratio_unshielded, 0.0);
 }
 
 TEST(StatisticsSink, RepeatedIdReplacesItsPart) {

@@ -54,6 +54,23 @@ inline void accumulate(shielding_statistics& total, const shielding_statistics& 
       std::max(total.max_shield_angle_error_deg, part.max_shield_angle_error_deg);
 }
 
+/// compute_shielding_statistics(m, angles), given s = compute_statistics(m, ...): a domain
+/// without small input angles has no shielded triangle, so the unshielded extremes are the
+/// mesh's own (the same triangle chosen by the same key in the same order: bitwise the same
+/// values), and no second pass over the triangles is made (it had been 6 % of pdd-mesh's time
+/// on the pipe at 16M triangles). With small angles: compute_shielding_statistics.
+/// Complexity O(1) without small angles, else O(T log s). Thread-safe.
+inline shielding_statistics shielding_statistics_of(const triangle_mesh& m,
+                                                    const small_input_angles& angles,
+                                                    const mesh_statistics& s) {
+  if (!angles.apexes.empty()) return compute_shielding_statistics(m, angles);
+  shielding_statistics st;
+  st.min_input_angle_deg = angles.min_input_angle_deg;
+  st.min_angle_unshielded_deg = s.min_angle_deg;
+  st.max_ratio_unshielded = s.max_ratio;
+  return st;
+}
+
 /// A MeshSink that computes compute_statistics (against `sizing`) and
 /// compute_shielding_statistics (against `domain`) of every subdomain mesh and passes the mesh
 /// on to `inner`. The totals (statistics(), shielding()) are combined in subdomain id order at
@@ -83,7 +100,8 @@ public:
 
   /// Measures the mesh, then hands it to the inner sink.
   void consume(index_t id, triangle_mesh&& mesh) {
-    part p{true, compute_statistics(mesh, sizing_), compute_shielding_statistics(mesh, angles_)};
+    part p{true, compute_statistics(mesh, sizing_), {}};
+    p.shielding = shielding_statistics_of(mesh, angles_, p.stats);
     {
       const std::lock_guard lock(mutex_);
       if (parts_.size() <= id) parts_.resize(id + std::size_t{1});
