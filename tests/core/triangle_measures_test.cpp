@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <random>
 #include <vector>
 
@@ -82,6 +84,53 @@ TEST(TriangleMeasures, AnglesMatchThreeAtan2AndSumTo180) {
     EXPECT_EQ(std::min({two[0], two[1], two[2]}), smallest_angle_deg(a, b, c)) << i;
     ++i;
   }
+}
+
+// degree_bin against its definition written out: the largest k in 1..179 with cos(k deg) >=
+// c (0 when none, and for NaN), by a linear scan; at every bin boundary and its neighbouring
+// doubles, near +-1 (the narrowest degrees in cosine), outside [-1, 1], and at random.
+std::size_t degree_bin_by_definition(double c) {
+  if (std::isnan(c)) return 0;
+  static const std::vector<double> cosines = [] {
+    std::vector<double> t;
+    for (int i = 0; i <= 180; ++i)
+      t.push_back(std::cos(static_cast<double>(i) * std::numbers::pi / 180.0));
+    return t;
+  }();
+  std::size_t k = 0;
+  for (std::size_t i = 1; i <= 179; ++i)
+    if (cosines[i] >= c) k = i;
+  return k;
+}
+
+TEST(TriangleMeasures, DegreeBinIsTheDefinition) {
+  std::vector<double> values{std::nan(""),
+                             std::numeric_limits<double>::infinity(),
+                             -std::numeric_limits<double>::infinity(),
+                             1.0,
+                             -1.0,
+                             0.0,
+                             1.5,
+                             -1.5};
+  for (int k = 0; k <= 180; ++k) {
+    const double b = std::cos(k * std::numbers::pi / 180.0);
+    double lo = b, hi = b;
+    for (int step = 0; step < 4; ++step) {
+      values.push_back(lo);
+      values.push_back(hi);
+      lo = std::nextafter(lo, -2.0);
+      hi = std::nextafter(hi, 2.0);
+    }
+  }
+  std::mt19937_64 rng(180);
+  std::uniform_real_distribution<double> any(-1.0, 1.0), near(0.0, 1e-3);
+  for (int i = 0; i < 200000; ++i) {
+    values.push_back(any(rng));
+    values.push_back(1.0 - near(rng));
+    values.push_back(-1.0 + near(rng));
+  }
+  for (const double c : values)
+    ASSERT_EQ(pdd::detail::degree_bin(c), degree_bin_by_definition(c)) << std::hexfloat << c;
 }
 
 } // namespace triangle_measures_test
