@@ -15,7 +15,8 @@
 #             pipe and the key, 8M for the MPI runs); THREADS="1 2 16" replaces the powers of
 #             two up to MAX_THREADS (threads and ranks); MPI_SUBDOMAINS_PER_RANK=k makes the
 #             scaled-size runs use k * P subdomains (default: MPI_SUBDOMAINS for every P);
-#             KERNELS="native" limits the kernels of the 16M runs.
+#             KERNELS="native" limits the kernels of the 16M runs; the part "versus" (not in
+#             the default list) runs issue 14's targets side by side, REPS times.
 # Every run is one process, timed by a small Python wrapper (wall, user + system CPU seconds,
 # peak RSS of the child). No mesh is written (pdd-mesh without -o; Triangle with -NEP, -Q).
 set -euo pipefail
@@ -118,6 +119,23 @@ bahamas() {
   done
 }
 
+# 4. Issue 14's targets side by side, REPS times (default 2): per domain Triangle, then pdd-mesh
+#    with the native kernel and the automatic plan on 1 and 2 threads: the pipe and the key at
+#    16M triangles, the Bahamas at 2e-5.
+versus_triangle() {
+  local rep d
+  for rep in $(seq "${REPS:-2}"); do
+    for d in "pipe ${PIPE_AREA:-2.61e-7}" "key ${KEY_AREA:-4.86e-7}" "bahamas_islands 2e-5"; do
+      set -- $d
+      timed "$1 triangle 1 rep$rep" "$tri" -pq20.7048a"$(decimal "$2")"QNEP "$data/$1.poly"
+      for t in 1 2; do
+        timed "$1 native auto $t rep$rep" "$bin/pdd-mesh" "$data/$1.poly" --max-area "$2" \
+          --threads "$t" --kernel native --quiet --stats "$out/$1-auto-t$t-rep$rep.json"
+      done
+    done
+  done
+}
+
 for part in ${SCALING_PARTS:-pipe mpi key bahamas sizes}; do
   case $part in
     pipe) kernels_and_threads pipe "${PIPE_AREA:-2.61e-7}" ;;
@@ -125,6 +143,7 @@ for part in ${SCALING_PARTS:-pipe mpi key bahamas sizes}; do
     mpi) mpi_ranks "${MPI_AREA:-5e-7}" "${MPI_SUBDOMAINS:-256}" ;;
     bahamas) bahamas ;;
     sizes) monolithic_sizes ;;
+    versus) versus_triangle ;;
     *) echo "unknown part $part" >&2; exit 2 ;;
   esac
 done
