@@ -179,8 +179,9 @@ inline std::size_t degree_bin(double cosine) noexcept {
   if (std::isnan(cosine)) return 0;
   const auto& c = degree_cosines();
   const double u = (1.0 - cosine) * (degree_cells / 2.0);
-  const std::size_t j =
-      u <= 0.0 ? 0 : std::min(static_cast<std::size_t>(u), degree_cells - 1);
+  constexpr double last = static_cast<double>(degree_cells - 1);
+  // clamped before the conversion (a cosine of -inf gives u = inf)
+  const std::size_t j = u <= 0.0 ? 0 : static_cast<std::size_t>(std::min(u, last));
   std::size_t k = degree_cell_start()[j];
   while (k < 179 && c[k + 1] >= cosine)
     ++k;
