@@ -62,8 +62,7 @@ inline double second_difference_y(const sampled_grid& g, std::size_t i, std::siz
 /// to the grid). Each node's second differences are taken once and the 4 x 4 window maxima
 /// are separable (rows, then columns): O(nodes) instead of 32 differences per cell.
 struct cell_curvatures {
-  std::size_t cx = 1;
-  std::vector<double> dxx, dyy; ///< per cell, row-major (cx cells a row)
+  std::vector<double> dxx, dyy; ///< per cell, row-major (max(nx, 1) cells a row)
 };
 
 /// The windowed maximum along one axis: out[c] = max of v[c-1 .. c+2] clipped to [0, n].
@@ -86,7 +85,7 @@ inline cell_curvatures curvatures(const sampled_grid& g) {
       sx[j * nodes_x + i] = second_difference_x(g, i, j);
       sy[j * nodes_x + i] = second_difference_y(g, i, j);
     }
-  cell_curvatures c{cx, std::vector<double>(cx * cy), std::vector<double>(cx * cy)};
+  cell_curvatures c{std::vector<double>(cx * cy), std::vector<double>(cx * cy)};
   std::vector<double> rows(cx * nodes_y); // per node row, the window maximum along x
   for (auto [node, cell] : {std::pair{&sx, &c.dxx}, std::pair{&sy, &c.dyy}}) {
     for (std::size_t j = 0; j < nodes_y; ++j)
