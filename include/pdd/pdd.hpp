@@ -77,6 +77,7 @@
 #include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/face_decoupling.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
 

@@ -17,6 +17,7 @@
 #include <pdd/decoupling/decoupling_parameter.hpp>
 #include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/geometry/validate.hpp>
@@ -26,6 +27,7 @@
 #include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
@@ -50,6 +52,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -85,15 +88,22 @@ public:
         partitioner_(std::move(partitioner)),
         executor_(detail::make_executor<E>(options_.threads)) {
     check_generate_options(options_);
-    general_ = !has_closed_loops(domain_); // validates
-    const detail::general_domain_plan general_plan =
-        general_ ? detail::plan_general_domain(domain_, options_) : detail::general_domain_plan{};
-    area_ = domain_area(domain_);
-    stats_.threads = executor_.concurrency();
     if (options_.sizing) sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
-    estimate_ = general_ ? detail::estimate_faces(domain_, options_.criteria, options_.sizing)
-                         : detail::estimate_plan(domain_, options_.criteria, options_.sizing,
-                                                 decoupling_criteria().max_area);
+    {
+      const domain_faces faces(domain_, domain_faces::validate_first{}); // one triangulation
+      general_ = !faces.closed_loops();
+      if (general_) domain_.rule = domain_rule::triangle;
+      if (options_.subdomains != 1) start_.emplace(domain_, faces); // MADD's regions
+      area_ = faces.area();
+      estimate_ = general_
+                      ? detail::estimate_faces(domain_, faces, options_.criteria, options_.sizing)
+                      : detail::estimate_plan(domain_, options_.criteria, options_.sizing,
+                                              decoupling_criteria().max_area);
+    }
+    const detail::general_domain_plan general_plan =
+        general_ ? detail::plan_general_domain(start_ ? &*start_ : nullptr, options_)
+                 : detail::general_domain_plan{};
+    stats_.threads = executor_.concurrency();
     stats_.estimated_triangles = estimate_.triangles;
     // without any area bound the mesh is graded by the geometry alone: the kernel meshes it
     const bool bounded = options_.sizing || std::isfinite(options_.criteria.max_area);
@@ -165,6 +175,7 @@ public:
                                   e.what() + ")");
       }
     }
+    start_.reset(); // MADD's regions are not needed again
     stats_.timings.decompose = seconds_since(t0);
     decomposed_ = true;
     return decomposition_;
@@ -261,7 +272,7 @@ private:
   /// decomposition_, with its measurements in gradation_ and the statistics.
   void decompose_graded(const madd_options& mo) {
     const gradation_options go = detail::graded_stage_options(options_, stats_.subdomains);
-    decomposition_ = gradation_controlled_decompose(domain_, options_.sizing, go, mo, partitioner_,
+    decomposition_ = gradation_controlled_decompose(start(), options_.sizing, go, mo, partitioner_,
                                                     &gradation_, &stats_.decomposition);
     detail::record_gradation(gradation_, stats_);
   }
@@ -352,9 +363,15 @@ private:
     if (graded_plan_)
       decompose_graded(mo);
     else
-      decomposition_ = pdd::decompose(domain_, mo, partitioner_, &stats_.decomposition);
+      decomposition_ = pdd::decompose(start(), mo, partitioner_, &stats_.decomposition);
     stats_.subdomains = decomposition_.subdomains.size();
     if (geometric_plan_) adopt_geometric(mo);
+  }
+
+  /// MADD's regions of the domain (found with the plan, or now).
+  const madd_start& start() {
+    if (!start_) start_.emplace(domain_);
+    return *start_;
   }
 
   mesh_criteria decoupling_criteria() const {
@@ -390,6 +407,7 @@ private:
   bool geometric_plan_ = false;
   /// The domain is not one of closed loops (see general_domain()).
   bool general_ = false;
+  std::optional<madd_start> start_; ///< until decompose(): the regions MADD starts from
   any_sizing user_sizing_;
   gradation_report gradation_;
   decomposition decomposition_;

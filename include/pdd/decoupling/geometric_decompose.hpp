@@ -15,6 +15,7 @@
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/sizing/any_sizing.hpp>
@@ -25,6 +26,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -232,6 +234,7 @@ geometric_decomposition geometric_decompose(const pslg& g, decomposition initial
   go.max_area = max_area;
   go.min_subdomain_triangles = 0.0; // the driver is continuous: 7.1 terminates (Lemma 17)
   go.max_subdomains = std::max(o.max_subdomains, go.min_subdomains);
+  std::optional<madd_start> start; // g's regions, found once for every round
   while (out.rounds.size() < o.max_rounds &&
          out.rounds[out.chosen].over_refinement > o.target_over_refinement) {
     std::size_t found = 0;
@@ -239,7 +242,8 @@ geometric_decomposition geometric_decompose(const pslg& g, decomposition initial
         detail::tiny_feature_driver(g, f, max_area, cap, slope, found);
     if (found == 0) break;
     gradation_report rep;
-    decomposition d = gradation_controlled_decompose(g, driver, go, mo, partitioner, &rep);
+    if (!start) start.emplace(g);
+    decomposition d = gradation_controlled_decompose(*start, driver, go, mo, partitioner, &rep);
     geometric_sizing_result s = geometric_sizing(d, f, max_area, go.r2, executor);
     out.rounds.push_back({d.subdomains.size(), found, slope, s.over_refinement(),
                           s.expected_triangles_F(), rep.capped});

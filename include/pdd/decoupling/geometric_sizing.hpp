@@ -107,9 +107,11 @@ inline geometric_piece measure_geometric_piece(const decomposition& d, std::size
   }
   const sizing_bounds r = f ? sizing_range(f, box) : sizing_bounds{max_area, max_area};
   p.bounds = {std::min(max_area, r.lo), std::min(max_area, r.hi)};
-  for (const domain_triangle& t : domain_faces(g).triangles())
+  const std::vector<domain_triangle> triangles = domain_faces(g).triangles();
+  for (const domain_triangle& t : triangles)
     p.triangles.push_back(t.vertices);
-  p.expected = inverse_area_integral(g, max_area, f, f ? 1024 : 1) / mean_triangle_area_fraction;
+  p.expected = inverse_area_integral(g.vertices, triangles, max_area, f, f ? 1024 : 1) /
+               mean_triangle_area_fraction;
   p.vertices = std::move(g.vertices);
   return p;
 }

@@ -9,6 +9,7 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/detail/pslg_faces.hpp>
 #include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/validate.hpp>
 
 #include <array>
 #include <vector>
@@ -38,6 +39,18 @@ public:
   /// \throws pdd::geometry_error as pdd::find_loops (odd_nesting) or pdd::validate (triangle).
   /// Complexity O(n log n) expected.
   explicit domain_faces(const pslg& g) { detail::faces_by_rule(g, pf_); }
+
+  /// Tag of the validating constructor.
+  struct validate_first {};
+
+  /// Validates g (pdd::validate, default options) and keeps the faces validation found: those
+  /// of Triangle's rule, whatever g.rule says (for a domain of closed loops, closed_loops(), the
+  /// same domain as odd nesting). One constrained triangulation where validate() followed by
+  /// domain_faces would build two. \throws pdd::geometry_error as pdd::validate.
+  /// Complexity as pdd::validate.
+  domain_faces(const pslg& g, validate_first) {
+    detail::validate_into(g, validate_options{}, &pf_);
+  }
 
   /// The triangles inside the domain (odd nesting level), in the triangulation's order
   /// (deterministic for a given PSLG). Complexity O(n).
@@ -97,6 +110,17 @@ public:
   std::size_t face_count() const noexcept { return pf_.face_in_domain.size(); }
   /// True when the domain is one of closed loops (see detail::pslg_faces::closed_loops).
   bool closed_loops() const noexcept { return pf_.closed_loops; }
+
+  /// The loops of a domain of closed loops (as pdd::find_loops), else nullptr.
+  const loop_structure* loops() const noexcept {
+    return pf_.closed_loops ? &pf_.lt.structure : nullptr;
+  }
+
+  /// The area of the domain, bitwise as pdd::domain_area for Triangle's rule: the loops' areas
+  /// for a domain of closed loops, else the sum of the face triangles' areas. Complexity O(n).
+  double area() const {
+    return pf_.closed_loops ? domain_area(pf_.lt.structure) : detail::faces_area(pf_);
+  }
 
 private:
   detail::pslg_faces pf_;

@@ -11,11 +11,11 @@
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/detail/assemble.hpp>
-#include <pdd/madd/detail/face_regions.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/rounds.hpp>
 #include <pdd/madd/detail/split.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/parallel/parallel_for.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 
@@ -30,20 +30,6 @@
 #include <vector>
 
 namespace pdd {
-
-namespace detail {
-/// The regions MADD starts from: the connected components of a domain of closed loops
-/// (regions_of), or the faces of a general PSLG (face_regions: each internal constraint then
-/// becomes an interface between the subdomains on its two sides).
-/// \throws decomposition_error when a general PSLG cannot be decoupled (the reason names the
-/// segment or vertex); geometry_error for an invalid PSLG.
-inline std::vector<madd_region> initial_regions(const pslg& g) {
-  if (has_closed_loops(g)) return regions_of(g);
-  face_region_set f = face_regions(g);
-  if (!f.refusal.empty()) throw decomposition_error("MADD: " + f.refusal);
-  return std::move(f.regions);
-}
-} // namespace detail
 
 /// Decomposes the domain of g into subdomains by MADD (dissertation ch. 3-4): N-way by divide
 /// and conquer (3.7), the largest subdomains first, concurrently in rounds (4.3: a round
@@ -71,12 +57,15 @@ inline std::vector<madd_region> initial_regions(const pslg& g) {
 /// triangles after max_refinement_levels: the message names the subdomain and the reason).
 /// Complexity: about O(sum over splits of |Z| log |Z|); N = 1024 on a pipe cross-section takes
 /// well under a second on one core. Thread-safety: reentrant (no shared state).
+/// This overload starts from regions found before (pdd::madd_start), so a domain decomposed
+/// several times is triangulated once.
 template <GraphPartitioner P = default_partitioner>
-decomposition decompose(const pslg& g, const madd_options& o = {}, const P& partitioner = {},
-                        decomposition_statistics* stats = nullptr) {
+decomposition decompose(const madd_start& start, const madd_options& o = {},
+                        const P& partitioner = {}, decomposition_statistics* stats = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   detail::check_madd_options(o);
-  detail::madd_state state(detail::initial_regions(g), o);
+  if (!start.refusal().empty()) throw decomposition_error("MADD: " + start.refusal());
+  detail::madd_state state(start.regions(), o);
   const double global_h = detail::global_refinement_length(state, o);
   const detail::madd_split_options so = detail::split_options_for(o);
   decomposition_statistics st;
@@ -107,6 +96,14 @@ decomposition decompose(const pslg& g, const madd_options& o = {}, const P& part
     *stats = std::move(st);
   }
   return d;
+}
+
+/// decompose on the regions of g (pdd::madd_start(g): validates g).
+template <GraphPartitioner P = default_partitioner>
+decomposition decompose(const pslg& g, const madd_options& o = {}, const P& partitioner = {},
+                        decomposition_statistics* stats = nullptr) {
+  detail::check_madd_options(o); // bad options before bad input, as ever
+  return decompose(madd_start(g), o, partitioner, stats);
 }
 
 } // namespace pdd

@@ -13,6 +13,7 @@
 #include <pdd/madd/detail/gradation_control.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 
@@ -146,8 +147,9 @@ inline std::string describe_wanted(const gradation_policy_state& s) {
 /// its m, M, expected triangles and the conditions it fails.
 /// Complexity: MADD's, plus per new subdomain one sizing_range and one constrained
 /// triangulation, plus per round a hash of all subdomain edges.
+/// `start`: the regions of the domain (pdd::madd_start), found once for several calls.
 template <GraphPartitioner P = default_partitioner>
-decomposition gradation_controlled_decompose(const pslg& g, const any_sizing& field,
+decomposition gradation_controlled_decompose(const madd_start& start, const any_sizing& field,
                                              const gradation_options& o, madd_options mo = {},
                                              const P& partitioner = {},
                                              gradation_report* report = nullptr,
@@ -165,7 +167,7 @@ decomposition gradation_controlled_decompose(const pslg& g, const any_sizing& fi
   mo.split_policy = [state](std::span<const madd_leaf_view> leaves) { return (*state)(leaves); };
   decomposition d;
   try {
-    d = decompose(g, mo, partitioner, stats);
+    d = decompose(start, mo, partitioner, stats);
   } catch (const decomposition_error& e) {
     if (state->last_priority.empty()) throw;
     throw decomposition_error(e.what() + detail::describe_wanted(*state));
@@ -183,6 +185,18 @@ decomposition gradation_controlled_decompose(const pslg& g, const any_sizing& fi
                                  [](double p) { return p > 0.0; });
   }
   return d;
+}
+
+/// gradation_controlled_decompose on the regions of g (pdd::madd_start(g): validates g).
+template <GraphPartitioner P = default_partitioner>
+decomposition gradation_controlled_decompose(const pslg& g, const any_sizing& field,
+                                             const gradation_options& o, madd_options mo = {},
+                                             const P& partitioner = {},
+                                             gradation_report* report = nullptr,
+                                             decomposition_statistics* stats = nullptr) {
+  check_gradation_options(o);
+  return gradation_controlled_decompose(madd_start(g), field, o, std::move(mo), partitioner, report,
+                                        stats);
 }
 
 } // namespace pdd

@@ -16,24 +16,23 @@
 
 namespace pdd {
 
-/// Integral over the domain of g of 1 / min(max_area, F(p)): each triangle of the domain's
-/// constrained Delaunay triangulation is cut into n^2 similar pieces (n chosen so that about
+/// Integral of 1 / min(max_area, F(p)) over the triangles (vertex ids into `vertices`) of a
+/// triangulated domain: each triangle is cut into n^2 similar pieces (n chosen so that about
 /// `samples` pieces cover the domain, at least 1 per triangle) and each piece contributes
 /// its area / min(max_area, F(centroid)) (the midpoint rule). Where the bound is infinite the
 /// contribution is 0. Deterministic; an estimate (its error shrinks with `samples`), not a
-/// bound. \tparam S a SizingField. \throws pdd::geometry_error as pdd::find_loops.
-/// Complexity O(n log n + samples) evaluations of F.
+/// bound. \tparam S a SizingField. Complexity O(triangles + samples) evaluations of F.
 template <SizingField S>
-double inverse_area_integral(const pslg& g, double max_area, const S& sizing,
-                             std::size_t samples = 1 << 16) {
-  const std::vector<domain_triangle> triangles = domain_faces(g).triangles();
+double inverse_area_integral(const std::vector<point>& vertices,
+                             const std::vector<domain_triangle>& triangles, double max_area,
+                             const S& sizing, std::size_t samples = 1 << 16) {
   if (triangles.empty()) return 0.0;
   const auto n = static_cast<std::size_t>(
       std::max(1.0, std::floor(std::sqrt(static_cast<double>(samples) / triangles.size()))));
   double sum = 0.0;
   for (const domain_triangle& tri : triangles) {
-    const point a = g.vertices[tri.vertices[0]], b = g.vertices[tri.vertices[1]],
-                c = g.vertices[tri.vertices[2]];
+    const point a = vertices[tri.vertices[0]], b = vertices[tri.vertices[1]],
+                c = vertices[tri.vertices[2]];
     const double ux = (b.x - a.x) / n, uy = (b.y - a.y) / n;
     const double vx = (c.x - a.x) / n, vy = (c.y - a.y) / n;
     const double piece = std::abs(ux * vy - uy * vx) / 2.0;
@@ -49,6 +48,14 @@ double inverse_area_integral(const pslg& g, double max_area, const S& sizing,
         }
   }
   return sum;
+}
+
+/// The integral above over the domain of g (the triangles of pdd::domain_faces by g.rule).
+/// \throws pdd::geometry_error as pdd::domain_faces. Complexity O(n log n + samples).
+template <SizingField S>
+double inverse_area_integral(const pslg& g, double max_area, const S& sizing,
+                             std::size_t samples = 1 << 16) {
+  return inverse_area_integral(g.vertices, domain_faces(g).triangles(), max_area, sizing, samples);
 }
 
 } // namespace pdd

@@ -21,10 +21,8 @@
 namespace pdd::detail {
 
 /// The connected components of a PSLG's domain as regions (outer loop counter-clockwise, holes
-/// clockwise), in the order of their outer loops in find_loops.
-/// \throws geometry_error as find_loops.
-inline std::vector<madd_region> regions_of(const pslg& g) {
-  const loop_structure ls = find_loops(g);
+/// clockwise), in the order of their outer loops in ls (g's loops, pdd::find_loops).
+inline std::vector<madd_region> regions_of(const pslg& g, const loop_structure& ls) {
   auto make_loop = [&](const polygon_loop& pl, bool want_ccw) {
     madd_loop l;
     const std::size_t n = pl.vertices.size();
@@ -50,6 +48,11 @@ inline std::vector<madd_region> regions_of(const pslg& g) {
     out.push_back(std::move(r));
   }
   return out;
+}
+
+/// regions_of on g's loops. \throws geometry_error as find_loops.
+inline std::vector<madd_region> regions_of(const pslg& g) {
+  return regions_of(g, find_loops(g));
 }
 
 /// One point of a registered edge's split group: the edge's ends (whose markers are not ours

@@ -251,10 +251,10 @@ inline madd_region face_region(const pslg& g, const std::vector<std::vector<inde
 /// at a corner below 60 deg or at a small angle to an internal constraint) why the
 /// decoupled pipeline cannot take g. Each region's loops run along PSLG segments, tagged
 /// external with the segment id and marker.
-/// \throws pdd::geometry_error as pdd::domain_faces. Complexity O(n log n) expected.
-inline face_region_set face_regions(const pslg& g) {
+/// `faces` are g's (pdd::domain_faces by g.rule, or with validate_first for Triangle's).
+/// Complexity O(n log n).
+inline face_region_set face_regions(const pslg& g, const domain_faces& faces) {
   face_region_set out;
-  const domain_faces faces(g);
   const auto segs = segment_lookup(g);
   const std::vector<domain_triangle> tris = faces.triangles();
   std::vector<std::vector<madd_feature>> features(faces.face_count());
@@ -280,6 +280,12 @@ inline face_region_set face_regions(const pslg& g) {
   }
   if (!out.refusal.empty()) out.regions.clear();
   return out;
+}
+
+/// face_regions on the faces of g by g.rule.
+/// \throws pdd::geometry_error as pdd::domain_faces. Complexity O(n log n) expected.
+inline face_region_set face_regions(const pslg& g) {
+  return face_regions(g, domain_faces(g));
 }
 
 } // namespace pdd::detail

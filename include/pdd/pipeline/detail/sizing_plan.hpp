@@ -37,14 +37,14 @@ inline mesh_size_estimate estimate_plan(const pslg& domain, const mesh_criteria&
 /// 1 / (0.656 min(max_area, F)) over its faces (pdd::inverse_area_integral), at least the
 /// triangles of its constrained Delaunay triangulation. Small features are not counted, so the
 /// estimate is low where the kernel grades down to them. Complexity O(n log n + samples).
-inline mesh_size_estimate estimate_faces(const pslg& domain, const mesh_criteria& criteria,
-                                         const any_sizing& sizing) {
+inline mesh_size_estimate estimate_faces(const pslg& domain, const domain_faces& faces,
+                                         const mesh_criteria& criteria, const any_sizing& sizing) {
   mesh_size_estimate e;
-  e.area_triangles =
-      inverse_area_integral(domain, criteria.max_area, sizing, sizing ? std::size_t{1} << 16 : 1) /
-      mean_triangle_area_fraction;
-  e.triangles =
-      std::max(e.area_triangles, static_cast<double>(domain_faces(domain).triangles().size()));
+  const std::vector<domain_triangle> triangles = faces.triangles();
+  e.area_triangles = inverse_area_integral(domain.vertices, triangles, criteria.max_area, sizing,
+                                           sizing ? std::size_t{1} << 16 : 1) /
+                     mean_triangle_area_fraction;
+  e.triangles = std::max(e.area_triangles, static_cast<double>(triangles.size()));
   return e;
 }
 

@@ -9,7 +9,7 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/face_decoupling.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/shielding/apply_shields.hpp>
@@ -26,21 +26,20 @@ namespace pdd::detail {
 /// What the plan knows of a domain that is not one of closed loops.
 struct general_domain_plan {
   std::size_t faces = 0; ///< faces of the domain (each at least one subdomain when decoupled)
-  std::string refusal;   ///< why it cannot be decoupled (pdd::face_decoupling); empty: it can
+  std::string refusal;   ///< why it cannot be decoupled (pdd::madd_start); empty: it can
 };
 
-/// A domain that is not one of closed loops: Triangle's rule, and (unless one subdomain is
-/// asked for) its faces, which MADD starts from.
+/// A domain that is not one of closed loops (read by Triangle's rule): its faces, which MADD
+/// starts from (`start`: null when one subdomain is asked for, the faces are then not needed).
 /// \throws pdd::decomposition_error for options.subdomains > 1 on a domain that cannot be
-/// decoupled (pdd::face_decoupling: a face touching itself, a constraint corner < 60 deg, a
-/// segment inside a face at such a corner; the message names it).
-inline general_domain_plan plan_general_domain(pslg& domain, const generate_options& options) {
-  domain.rule = domain_rule::triangle;
+/// decoupled (pdd::madd_start::refusal: a face touching itself, a constraint corner < 60 deg,
+/// a segment inside a face at such a corner; the message names it).
+inline general_domain_plan plan_general_domain(const madd_start* start,
+                                               const generate_options& options) {
   general_domain_plan p;
-  if (options.subdomains == 1) return p;
-  face_decoupling_report f = face_decoupling(domain);
-  p.faces = f.faces;
-  p.refusal = std::move(f.refusal);
+  if (!start) return p;
+  p.faces = start->regions().size();
+  p.refusal = start->refusal();
   if (options.subdomains > 1 && !p.refusal.empty())
     throw decomposition_error(general_domain_error(options.subdomains, p.refusal));
   return p;

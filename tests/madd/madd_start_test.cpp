@@ -1,0 +1,141 @@
+// pdd::madd_start (the regions MADD starts from, found once) and the one-triangulation helpers
+// behind it: domain_faces' validating constructor, its area, and inverse_area_integral on given
+// triangles. Each must give bitwise what the separate calls gave, and the same errors.
+#include <pdd/errors.hpp>
+#include <pdd/geometry/domain_faces.hpp>
+#include <pdd/geometry/loops.hpp>
+#include <pdd/geometry/model_domains.hpp>
+#include <pdd/madd/decompose.hpp>
+#include <pdd/madd/face_decoupling.hpp>
+#include <pdd/madd/madd_start.hpp>
+#include <pdd/sizing/analytic.hpp>
+#include <pdd/sizing/inverse_area_integral.hpp>
+
+#include "decomposition_compare.hpp"
+#include "general_domains.hpp"
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace madd_start_test {
+
+using pdd::pslg;
+
+std::vector<std::pair<std::string, pslg>> domains() {
+  pslg triangle_rule_key = pdd::key_domain();
+  triangle_rule_key.rule = pdd::domain_rule::triangle;
+  return {{"key", pdd::key_domain()},
+          {"key, Triangle's rule", triangle_rule_key},
+          {"pipe", pdd::pipe_domain(96, 32)},
+          {"layered", pdd::test::layered_domain()},
+          {"pinched", pdd::test::pinched_rings()},
+          {"tgrid", pdd::test::t_junction_grid()},
+          {"combined", pdd::test::combined_domain()},
+          {"random map 3", pdd::test::random_map(3)}};
+}
+
+TEST(MaddStart, ValidatingFacesAreTheFacesOfTrianglesRule) {
+  for (auto [name, g] : domains()) {
+    SCOPED_TRACE(name);
+    const pdd::domain_faces validated(g, pdd::domain_faces::validate_first{});
+    g.rule = pdd::domain_rule::triangle;
+    const pdd::domain_faces by_rule(g);
+    EXPECT_EQ(validated.closed_loops(), by_rule.closed_loops());
+    EXPECT_EQ(validated.closed_loops(), pdd::has_closed_loops(g));
+    EXPECT_EQ(validated.face_count(), by_rule.face_count());
+    const auto a = validated.triangles(), b = by_rule.triangles();
+    ASSERT_EQ(a.size(), b.size());
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].vertices, b[i].vertices);
+      EXPECT_EQ(a[i].face, b[i].face);
+    }
+    EXPECT_EQ(std::bit_cast<std::uint64_t>(validated.area()),
+              std::bit_cast<std::uint64_t>(pdd::domain_area(g)));
+    EXPECT_EQ(validated.loops() != nullptr, validated.closed_loops());
+  }
+}
+
+TEST(MaddStart, ValidatingFacesRejectWhatValidateRejects) {
+  pslg crossing; // two segments crossing inside a square
+  crossing.add_loop(std::vector<pdd::point>{{0, 0}, {4, 0}, {4, 4}, {0, 4}});
+  const auto a = crossing.add_vertex({1, 1}), b = crossing.add_vertex({3, 3});
+  const auto c = crossing.add_vertex({1, 3}), d = crossing.add_vertex({3, 1});
+  crossing.add_segment(a, b);
+  crossing.add_segment(c, d);
+  EXPECT_THROW(pdd::validate(crossing), pdd::geometry_error);
+  EXPECT_THROW(pdd::domain_faces(crossing, pdd::domain_faces::validate_first{}),
+               pdd::geometry_error);
+  EXPECT_THROW(pdd::madd_start{crossing}, pdd::geometry_error);
+  pslg hole_on_segment = pdd::key_domain();
+  hole_on_segment.holes.push_back(hole_on_segment.vertices[0]);
+  EXPECT_THROW(pdd::madd_start{hole_on_segment}, pdd::geometry_error);
+}
+
+TEST(MaddStart, InverseAreaIntegralOnGivenTrianglesIsTheDomainsOwn) {
+  const pdd::analytic_sizing f([](pdd::point p) { return 1e-3 * (1.0 + p.x * p.x + p.y * p.y); });
+  for (auto [name, g] : domains()) {
+    SCOPED_TRACE(name);
+    g.rule = pdd::domain_rule::triangle;
+    const pdd::domain_faces faces(g);
+    for (const std::size_t samples : {std::size_t{1}, std::size_t{1} << 12}) {
+      const double whole = pdd::inverse_area_integral(g, 5e-3, f, samples);
+      const double given =
+          pdd::inverse_area_integral(g.vertices, faces.triangles(), 5e-3, f, samples);
+      EXPECT_GT(whole, 0.0);
+      EXPECT_EQ(std::bit_cast<std::uint64_t>(whole), std::bit_cast<std::uint64_t>(given));
+    }
+  }
+}
+
+TEST(MaddStart, FacesAndRefusalsAreThoseOfFaceDecoupling) {
+  for (auto [name, g] : domains()) {
+    SCOPED_TRACE(name);
+    const pdd::madd_start start(g);
+    EXPECT_EQ(start.general(), !pdd::has_closed_loops(g));
+    if (!start.general()) {
+      EXPECT_TRUE(start.refusal().empty());
+      std::size_t components = 0; // one region per outer loop
+      for (const pdd::polygon_loop& l : pdd::find_loops(g).loops)
+        components += l.bounds_domain_inside ? 1 : 0;
+      EXPECT_EQ(start.regions().size(), components);
+      continue;
+    }
+    const pdd::face_decoupling_report r = pdd::face_decoupling(g);
+    EXPECT_EQ(start.refusal(), r.refusal);
+    EXPECT_EQ(start.regions().size(), r.faces);
+    EXPECT_EQ(start.refusal().empty(), !start.regions().empty());
+  }
+  // the pinched rings touch themselves: refused, naming the vertex, by decompose too
+  const pdd::madd_start pinched(pdd::test::pinched_rings());
+  ASSERT_FALSE(pinched.refusal().empty());
+  EXPECT_NE(pinched.refusal().find("vertex"), std::string::npos);
+  try {
+    (void)pdd::decompose(pinched, pdd::madd_options{.subdomains = 4});
+    ADD_FAILURE() << "a refused start was decomposed";
+  } catch (const pdd::decomposition_error& e) {
+    EXPECT_EQ(std::string(e.what()), "MADD: " + pinched.refusal());
+  }
+}
+
+TEST(MaddStart, DecomposingFromOneStartIsDecomposingTheDomain) {
+  for (auto [name, g] : domains()) {
+    SCOPED_TRACE(name);
+    const pdd::madd_start start(g);
+    if (!start.refusal().empty()) continue;
+    for (const std::size_t n : {std::size_t{8}, std::size_t{16}}) {
+      pdd::madd_options o;
+      o.subdomains = std::max(n, start.regions().size());
+      const pdd::decomposition once = pdd::decompose(start, o);
+      pdd::test::expect_same_decomposition(once, pdd::decompose(g, o));
+      pdd::test::expect_same_decomposition(once,
+                                           pdd::decompose(start, o)); // the start is not used up
+    }
+  }
+}
+
+} // namespace madd_start_test
