@@ -39,6 +39,8 @@ struct mesh_options {
   unsigned threads = 0;
   pdd::gradation_options gradation;      // --r1, --r2 (Algorithm 7.1 of the graded method)
   std::string geometric_sizing = "auto"; // --geometric-sizing (Algorithm 8.3)
+  /// --geometric-max-subdomains: the geometric loop's cap (geometric_decompose_options)
+  std::size_t geometric_max_subdomains = pdd::geometric_decompose_options{}.max_subdomains;
   bool quiet = false;
   /// --format: the per-subdomain output's file format (vtu: .vtu + mesh.pvtu; binary: .pddm +
   /// mesh.pddi)
@@ -87,7 +89,7 @@ inline CLI::Option* add_output_options(CLI::App& app, mesh_options& o) {
 }
 
 /// Registers the method's options on `app`: the graded method's --r1 and --r2, the geometric
-/// sizing (--geometric-sizing) and the kernel (--kernel).
+/// sizing (--geometric-sizing, --geometric-max-subdomains) and the kernel (--kernel).
 inline void add_method_options(CLI::App& app, mesh_options& o) {
   app.add_option("--r1", o.gradation.r1,
                  "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
@@ -97,6 +99,10 @@ inline void add_method_options(CLI::App& app, mesh_options& o) {
                  "decouple with the sizing function built from the geometry (Algorithm 8.3): "
                  "auto (default: when a feature is smaller than the mesh), on, off")
       ->check(CLI::IsMember({"auto", "on", "off"}));
+  app.add_option("--geometric-max-subdomains", o.geometric_max_subdomains,
+                 "geometric path: the most subdomains its rounds of Algorithm 7.1 may make "
+                 "(default 4096)")
+      ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 24));
   app.add_option("--kernel", o.kernel,
                  "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
                  "(pdd's triangle-array mesher)")
@@ -148,6 +154,7 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
   g.geometric_sizing = o.geometric_sizing == "on"    ? pdd::geometric_sizing_mode::on
                        : o.geometric_sizing == "off" ? pdd::geometric_sizing_mode::off
                                                      : pdd::geometric_sizing_mode::automatic;
+  g.geometric_loop.max_subdomains = o.geometric_max_subdomains;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
 }
