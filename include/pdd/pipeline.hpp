@@ -192,7 +192,10 @@ public:
       // Algorithm 8.2: shield the small angles of every subdomain (graded: Theorem 26's l_i per
       // subdomain; uniform: one bound); k then comes from the shielded subdomains D_i'.
       std::vector<subdomain_shields> shields;
-      if (!(options_.sizing && try_graded_path(shields))) shields = decouple_uniform();
+      // one k_i per subdomain (Theorem 22), for a field and for the uniform bound alike: a
+      // short separator, a narrow subdomain or a small feature then lowers k only in the
+      // subdomains beside it, not everywhere; the uniform path only for a set k
+      if (!try_graded_path(shields)) shields = decouple_uniform();
       decoupled_decomposition_.shields.resize(shields.size());
       for (std::size_t s = 0; s < shields.size(); ++s)
         decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);

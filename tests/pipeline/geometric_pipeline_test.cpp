@@ -108,11 +108,13 @@ TEST(GeometricPipeline, RequestedNAndTheModes) {
   EXPECT_EQ(on.stats.path, "geometric");
   EXPECT_GE(on.stats.subdomains, 16u);
   EXPECT_TRUE(on.report.ok());
-  // off: the uniform path with one k held down by the notch (a requested N is kept)
+  // off: N-way MADD and the graded path under the uniform bound (k_i held down by the notch
+  // only beside it; a requested N is kept)
   o.geometric_sizing = pdd::geometric_sizing_mode::off;
   pdd::pipeline<> off(g, o);
   off.decouple();
-  EXPECT_EQ(off.statistics().path, "uniform");
+  EXPECT_EQ(off.statistics().path, "graded");
+  EXPECT_EQ(off.statistics().subdomains, 16u);
   EXPECT_EQ(off.statistics().plan_reason, "geometric sizing off");
   // a square without small features: automatic says why it is not needed
   pdd::pslg square;
@@ -122,7 +124,7 @@ TEST(GeometricPipeline, RequestedNAndTheModes) {
   o.criteria.max_area = 1e-6; // automatic N > 1
   pdd::pipeline<> plain(square, o);
   plain.decouple();
-  EXPECT_EQ(plain.statistics().path, "uniform");
+  EXPECT_EQ(plain.statistics().path, "graded");
   EXPECT_NE(plain.statistics().plan_reason.find("no feature smaller than the mesh"),
             std::string::npos);
   // one subdomain asked for

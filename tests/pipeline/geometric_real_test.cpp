@@ -67,7 +67,7 @@ TEST(GeometricReal, LakeTexasAirfoilVerifiedAndThreadIndependent) {
         EXPECT_GE(one.stats.sizing_rounds, 1u);
       } else { // automatic: the rule's path, and its reason
         const bool needed = one.stats.plan_reason.find("Algorithm 8.3") != std::string::npos;
-        EXPECT_TRUE(one.stats.path == (needed ? "geometric" : "uniform") ||
+        EXPECT_TRUE(one.stats.path == (needed ? "geometric" : "graded") ||
                     (needed && one.stats.path == "monolithic"))
             << one.stats.path << ": " << one.stats.plan_reason;
       }

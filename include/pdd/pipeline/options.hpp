@@ -37,10 +37,11 @@ enum class geometric_sizing_mode {
   /// With criteria.max_area alone (no field) and automatic N, when N > 1 and some feature is
   /// smaller than the mesh (lfs_min of the domain below the
   /// area term (1/2) sqrt(m / sqrt2) of Proposition 20, m the smallest area bound), so that
-  /// the uniform path's k would be held down by it everywhere.
+  /// k_i would be held down by it in every subdomain beside it (split points of the size of
+  /// the feature along all their separators).
   automatic,
   on,  ///< whenever N > 1 (and no k_scale / k_override)
-  off, ///< never (the uniform or graded path as before)
+  off, ///< never (N-way MADD or Algorithm 7.1, and the graded path, as before)
 };
 
 /// The decoupling path's own knobs (the criteria and the sizing are generate_options'): k of
@@ -69,6 +70,10 @@ struct generate_options {
   /// k_override are set, N-way MADD and the interim uniform path are used instead: k from
   /// the field's minimum over the domain's bounding box (generate_statistics::graded_fallback
   /// says why). The kernel meshes each subdomain with the field itself either way.
+  /// Without a field (criteria.max_area alone) the decoupling path is the graded one too, on
+  /// N-way MADD's subdomains: m(D_i) = max_area, k_i = min(lfs_min(D_i), L_i / 4, the area
+  /// term) per subdomain, lowered where relation 7.1 needs it, so a short separator or a small
+  /// feature holds k down only beside it (one global k where k_scale or k_override are set).
   any_sizing sizing{};
   /// Algorithm 7.1's options for the graded method (R1, R2, the termination minimum and the
   /// most subdomains). The pipeline sets the rest: automatic N (subdomains == 0): T =

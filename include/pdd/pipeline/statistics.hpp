@@ -45,11 +45,11 @@ struct generate_statistics {
   generate_timings timings;
   decomposition_statistics decomposition; ///< MADD's measurements (N > 1)
   std::vector<subdomain_report> per_subdomain;
-  /// With a sizing field and N > 1: true when the graded decoupling path (decouple_graded,
-  /// one k_i per subdomain; small input angles shielded per subdomain with Theorem 26's l_i)
-  /// was used, false when decoupling.k_scale or decoupling.k_override were in play and the
-  /// interim uniform path with k from the field's minimum was used instead (graded_fallback
-  /// says why).
+  /// N > 1: true when the graded decoupling path (decouple_graded, one k_i per subdomain;
+  /// small input angles shielded per subdomain with Theorem 26's l_i) was used, with a field
+  /// or the uniform bound; false when decoupling.k_scale or decoupling.k_override were in play
+  /// and the uniform path with one k (from the field's minimum) was used instead
+  /// (graded_fallback says why).
   bool graded_path = false;
   std::string graded_fallback;
   std::vector<double> subdomain_k; ///< k_i per subdomain (graded path)
