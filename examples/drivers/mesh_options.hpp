@@ -41,6 +41,7 @@ struct mesh_options {
   std::string geometric_sizing = "auto"; // --geometric-sizing (Algorithm 8.3)
   /// --geometric-max-subdomains: the geometric loop's cap (geometric_decompose_options)
   std::size_t geometric_max_subdomains = pdd::geometric_decompose_options{}.max_subdomains;
+  std::string geometric_field = "user"; // --geometric-field: user (f) or 8.3 (Algorithm 8.3's F)
   bool quiet = false;
   /// --format: the per-subdomain output's file format (vtu: .vtu + mesh.pvtu; binary: .pddm +
   /// mesh.pddi)
@@ -89,7 +90,8 @@ inline CLI::Option* add_output_options(CLI::App& app, mesh_options& o) {
 }
 
 /// Registers the method's options on `app`: the graded method's --r1 and --r2, the geometric
-/// sizing (--geometric-sizing, --geometric-max-subdomains) and the kernel (--kernel).
+/// sizing (--geometric-sizing, --geometric-max-subdomains, --geometric-field) and the kernel
+/// (--kernel).
 inline void add_method_options(CLI::App& app, mesh_options& o) {
   app.add_option("--r1", o.gradation.r1,
                  "graded method: Condition 1 bound M/m per subdomain (default 1.425)");
@@ -103,6 +105,10 @@ inline void add_method_options(CLI::App& app, mesh_options& o) {
                  "geometric path: the most subdomains its rounds of Algorithm 7.1 may make "
                  "(default 4096)")
       ->check(CLI::Range(std::size_t{2}, std::size_t{1} << 24));
+  app.add_option("--geometric-field", o.geometric_field,
+                 "geometric path: mesh with the user's area bound (user, default) or with "
+                 "Algorithm 8.3's F (8.3)")
+      ->check(CLI::IsMember({"user", "8.3"}));
   app.add_option("--kernel", o.kernel,
                  "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
                  "(pdd's triangle-array mesher)")
@@ -155,6 +161,8 @@ inline pdd::generate_options generate_options_for(const mesh_options& o, const p
                        : o.geometric_sizing == "off" ? pdd::geometric_sizing_mode::off
                                                      : pdd::geometric_sizing_mode::automatic;
   g.geometric_loop.max_subdomains = o.geometric_max_subdomains;
+  g.geometric_field = o.geometric_field == "8.3" ? pdd::geometric_mesh_field::algorithm_8_3
+                                                 : pdd::geometric_mesh_field::user;
   g.sizing = sizing_field(o.sizing, domain, o.max_area, sizing_kind);
   return g;
 }

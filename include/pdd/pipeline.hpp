@@ -203,8 +203,10 @@ public:
       if (options_.subdomains == 0 &&
           static_cast<double>(stats_.split_points) >
               options_.planning.max_split_point_fraction * stats_.estimated_triangles)
-        fall_back_to_whole_domain(detail::split_point_reason(
-            stats_.split_points, stats_.estimated_triangles, options_.planning));
+        fall_back_to_whole_domain( // the geometric plan's reason stays, with its rounds
+            (geometric_plan_ ? stats_.plan_reason + "; " : std::string()) +
+            detail::split_point_reason(stats_.split_points, stats_.estimated_triangles,
+                                       options_.planning));
     }
     stats_.path = detail::path_name(stats_, geometric_plan_);
     stats_.timings.decouple = seconds_since(t0);
@@ -280,7 +282,8 @@ private:
     detail::record_gradation(gradation_, stats_);
   }
 
-  /// The geometric path (detail::run_geometric): its decomposition and F replace MADD's and f.
+  /// The geometric path (detail::run_geometric): its decomposition replaces MADD's, and with
+  /// geometric_mesh_field::algorithm_8_3 its F replaces f.
   void adopt_geometric(const madd_options& mo) {
     geometric_decomposition gd =
         detail::run_geometric(domain_, std::move(decomposition_), options_, stats_.subdomains, mo,
@@ -288,7 +291,8 @@ private:
     decomposition_ = std::move(gd.parts);
     stats_.subdomains = decomposition_.subdomains.size();
     user_sizing_ = options_.sizing;
-    options_.sizing = *gd.sizing.field;
+    if (options_.geometric_field == geometric_mesh_field::algorithm_8_3)
+      options_.sizing = *gd.sizing.field;
     graded_plan_ = true;
     if (detail::record_geometric(gd, options_, stats_, gradation_)) fall_back_to_whole_domain("");
   }

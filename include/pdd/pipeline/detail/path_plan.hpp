@@ -115,10 +115,12 @@ run_geometric(const pslg& domain, decomposition initial, const generate_options&
                              partitioner, executor);
 }
 
-/// Records the loop in the statistics and the gradation report (m_F(D_i) = g_i, M_F(D_i),
-/// the expected triangles under F for the executor's order) and scales the estimate by the
-/// chosen round's over-refinement. Returns true when the plan should fall back to N = 1
-/// (automatic N and over-refinement above o.max_geometric_over_refinement).
+/// Records the loop in the statistics and the gradation report. With Algorithm 8.3's F
+/// (o.geometric_field): m_F(D_i) = g_i, M_F(D_i) and the expected triangles under F for the
+/// executor's order, the estimate scaled by the chosen round's over-refinement; returns true
+/// when the plan should fall back to N = 1 (automatic N and over-refinement above
+/// o.max_geometric_over_refinement). With the user's field: the expected triangles under f
+/// only (the bounds then come from f itself); false (the split points decide, later).
 inline bool record_geometric(const geometric_decomposition& gd, const generate_options& o,
                              generate_statistics& st, gradation_report& rep) {
   st.sizing_rounds = gd.rounds.size();
@@ -127,13 +129,18 @@ inline bool record_geometric(const geometric_decomposition& gd, const generate_o
   for (const geometric_round& r : gd.rounds)
     st.estimated_over_refinement.push_back(r.over_refinement);
   const double rho = gd.rounds[gd.chosen].over_refinement;
+  const bool with_f = o.geometric_field == geometric_mesh_field::user;
   rep = {};
   for (std::size_t s = 0; s < gd.sizing.g.size(); ++s) {
-    rep.bounds.push_back(gd.sizing.field->piece_bounds(s));
-    rep.expected_triangles.push_back(gd.sizing.expected_f[s] / gd.sizing.scale(s));
+    if (!with_f) rep.bounds.push_back(gd.sizing.field->piece_bounds(s));
+    rep.expected_triangles.push_back(gd.sizing.expected_f[s] / (with_f ? 1.0 : gd.sizing.scale(s)));
   }
-  st.plan_reason += "; " + std::to_string(gd.rounds.size()) +
-                    " round(s), estimated over-refinement " + number_text(100.0 * rho) + " %";
+  st.plan_reason += "; " + std::to_string(gd.rounds.size()) + " round(s), Algorithm 8.3's " +
+                    "estimated over-refinement " + number_text(100.0 * rho) + " %";
+  if (with_f) {
+    st.plan_reason += "; meshed with the user's field (k_i <= lfs_min(D_i))";
+    return false;
+  }
   if (o.subdomains != 0 || !(rho > o.max_geometric_over_refinement)) {
     st.estimated_triangles *= 1.0 + rho; // the plan's size check counts F's triangles
     return false;
