@@ -17,7 +17,6 @@
 #include <pdd/decoupling/decoupling_parameter.hpp>
 #include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
 #include <pdd/geometry/validate.hpp>
@@ -31,6 +30,7 @@
 #include <pdd/meshing/mesh_subdomains.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
+#include <pdd/pipeline/detail/domain_reading.hpp>
 #include <pdd/pipeline/detail/graded_path.hpp>
 #include <pdd/pipeline/detail/memory_check.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
@@ -59,11 +59,11 @@
 
 namespace pdd {
 
-/// The uniform decoupling pipeline in stages (dissertation 6.4, Algorithm 6.1):
-/// decompose() runs MADD into N subdomains, decouple() computes k and the decoupling path
-/// (Theorem 15, Lemma 9), mesh(sink) meshes every subdomain independently on the executor and
-/// streams the meshes to a MeshSink. Each stage runs the earlier ones if needed; the results
-/// of each stage can be inspected (and changed) before the next.
+/// The decoupling pipeline in stages (dissertation 6.4, Algorithm 6.1; 7.4-7.5):
+/// decompose() runs MADD into N subdomains, decouple() computes k_i per subdomain and the
+/// graded decoupling path (Theorem 22, Lemma 9; one k where k is set), mesh(sink) meshes every
+/// subdomain independently on the executor and streams the meshes to a MeshSink. Each stage
+/// runs the earlier ones if needed; its results can be inspected (and changed) before the next.
 /// With N = 1 there is no decomposition: mesh() runs the kernel on the whole domain and
 /// delivers it as subdomain 0.
 /// \tparam M a DelaunayMesher. \tparam P a GraphPartitioner. \tparam E an Executor (built from
@@ -74,32 +74,26 @@ template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitio
           Executor E = tbb_executor>
 class pipeline {
 public:
-  /// Checks the options (check_generate_options), validates the domain (pdd::validate; one that
-  /// is not of closed loops, pdd::has_closed_loops, is read by Triangle's rule and takes the
-  /// uniform or graded path from its faces, detail::plan_general_domain, or is meshed whole when it
-  /// cannot be decoupled), estimates the mesh size (pdd::estimate_mesh_size: the area bound, the
-  /// sizing field and the local feature size; size_estimate()) and plans N from it
-  /// (automatic_subdomains when options.subdomains == 0 and some area bound is given; N = 1 without
-  /// any). \throws pdd::decomposition_error for contradicting options (also subdomains > 1 on a
-  /// domain not of closed loops that cannot be decoupled); pdd::geometry_error for an invalid
-  /// domain.
+  /// Checks the options (check_generate_options), validates the domain once
+  /// (detail::read_domain; one not of closed loops is read by Triangle's rule and decoupled
+  /// from its faces, detail::plan_general_domain, or meshed whole when it cannot be),
+  /// estimates the mesh size (pdd::estimate_mesh_size: the area bound, the sizing field and
+  /// the local feature size; size_estimate()) and plans N from it (automatic_subdomains when
+  /// options.subdomains == 0 and some area bound is given; N = 1 without any). \throws
+  /// pdd::decomposition_error for contradicting options (also subdomains > 1 on a domain not of
+  /// closed loops that cannot be decoupled); pdd::geometry_error for an invalid domain.
   pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
       : domain_(std::move(domain)), options_(std::move(options)), mesher_(std::move(mesher)),
         partitioner_(std::move(partitioner)),
         executor_(detail::make_executor<E>(options_.threads)) {
     check_generate_options(options_);
     if (options_.sizing) sizing_min_ = sizing_range(options_.sizing, bounding_box(domain_)).lo;
-    {
-      const domain_faces faces(domain_, domain_faces::validate_first{}); // one triangulation
-      general_ = !faces.closed_loops();
-      if (general_) domain_.rule = domain_rule::triangle;
-      if (options_.subdomains != 1) start_.emplace(domain_, faces); // MADD's regions
-      area_ = faces.area();
-      estimate_ = general_
-                      ? detail::estimate_faces(domain_, faces, options_.criteria, options_.sizing)
-                      : detail::estimate_plan(domain_, options_.criteria, options_.sizing,
-                                              decoupling_criteria().max_area);
-    }
+    detail::domain_reading read =
+        detail::read_domain(domain_, options_, decoupling_criteria().max_area);
+    general_ = read.general;
+    area_ = read.area;
+    estimate_ = read.estimate;
+    start_ = std::move(read.start);
     const detail::general_domain_plan general_plan =
         general_ ? detail::plan_general_domain(start_ ? &*start_ : nullptr, options_)
                  : detail::general_domain_plan{};
@@ -277,7 +271,7 @@ private:
   /// decomposition_, with its measurements in gradation_ and the statistics.
   void decompose_graded(const madd_options& mo) {
     const gradation_options go = detail::graded_stage_options(options_, stats_.subdomains);
-    decomposition_ = gradation_controlled_decompose(start(), options_.sizing, go, mo, partitioner_,
+    decomposition_ = gradation_controlled_decompose(*start_, options_.sizing, go, mo, partitioner_,
                                                     &gradation_, &stats_.decomposition);
     detail::record_gradation(gradation_, stats_);
   }
@@ -367,18 +361,13 @@ private:
 
   /// One MADD run with mo: graded (Algorithm 7.1) or not, then the geometric path's adoption.
   void madd_with(const madd_options& mo) {
+    PDD_ASSERT(start_); // read with the plan: N > 1 needs options.subdomains != 1
     if (graded_plan_)
       decompose_graded(mo);
     else
-      decomposition_ = pdd::decompose(start(), mo, partitioner_, &stats_.decomposition);
+      decomposition_ = pdd::decompose(*start_, mo, partitioner_, &stats_.decomposition);
     stats_.subdomains = decomposition_.subdomains.size();
     if (geometric_plan_) adopt_geometric(mo);
-  }
-
-  /// MADD's regions of the domain (found with the plan, or now).
-  const madd_start& start() {
-    if (!start_) start_.emplace(domain_);
-    return *start_;
   }
 
   mesh_criteria decoupling_criteria() const {
