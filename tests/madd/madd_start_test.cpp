@@ -77,7 +77,7 @@ TEST(MaddStart, ValidatingFacesRejectWhatValidateRejects) {
 }
 
 TEST(MaddStart, InverseAreaIntegralOnGivenTrianglesIsTheDomainsOwn) {
-  const pdd::analytic_sizing f([](pdd::point p) { return 1e-3 * (1.0 + p.x * p.x + p.y * p.y); });
+  const pdd::analytic_sizing f{[](pdd::point p) { return 1e-3 * (1.0 + p.x * p.x + p.y * p.y); }};
   for (auto [name, g] : domains()) {
     SCOPED_TRACE(name);
     g.rule = pdd::domain_rule::triangle;

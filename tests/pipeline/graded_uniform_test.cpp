@@ -8,6 +8,7 @@
 #include "test_support.hpp"
 #include "verified.hpp"
 
+#include <pdd/generate.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/pipeline.hpp>
 
