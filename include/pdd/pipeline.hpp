@@ -281,7 +281,7 @@ private:
   void adopt_geometric(const madd_options& mo) {
     geometric_decomposition gd =
         detail::run_geometric(domain_, std::move(decomposition_), options_, stats_.subdomains, mo,
-                              partitioner_, executor_);
+                              partitioner_, executor_, &*start_);
     decomposition_ = std::move(gd.parts);
     stats_.subdomains = decomposition_.subdomains.size();
     user_sizing_ = options_.sizing;

@@ -214,16 +214,17 @@ inline feature_driven_sizing tiny_feature_driver(const pslg& g, const any_sizing
 ///    subdomains where the driver meets f); then Algorithm 8.3 again. A round that reached
 ///    o.max_subdomains ends the loop (a slower grading needs still more subdomains).
 /// The round with the fewest expected triangles under F is returned (rounds lists all).
+/// \param regions g's regions (pdd::madd_start) when the caller has them; else found here once.
 /// \param go Algorithm 7.1's options as the pipeline sets them (R1, R2, T, min_subdomains);
 /// max_area, min_subdomain_triangles and max_subdomains are set here.
 /// \throws as pdd::geometric_sizing and pdd::gradation_controlled_decompose.
 /// Deterministic for every executor and thread count.
 template <GraphPartitioner P = default_partitioner, Executor E = sequential_executor>
-geometric_decomposition geometric_decompose(const pslg& g, decomposition initial,
-                                            const any_sizing& f, double max_area,
-                                            gradation_options go, const madd_options& mo,
-                                            const geometric_decompose_options& o = {},
-                                            const P& partitioner = {}, const E& executor = {}) {
+geometric_decomposition
+geometric_decompose(const pslg& g, decomposition initial, const any_sizing& f, double max_area,
+                    gradation_options go, const madd_options& mo,
+                    const geometric_decompose_options& o = {}, const P& partitioner = {},
+                    const E& executor = {}, const madd_start* regions = nullptr) {
   geometric_decomposition out;
   out.sizing = geometric_sizing(initial, f, max_area, go.r2, executor);
   out.parts = std::move(initial);
@@ -234,7 +235,7 @@ geometric_decomposition geometric_decompose(const pslg& g, decomposition initial
   go.max_area = max_area;
   go.min_subdomain_triangles = 0.0; // the driver is continuous: 7.1 terminates (Lemma 17)
   go.max_subdomains = std::max(o.max_subdomains, go.min_subdomains);
-  std::optional<madd_start> start; // g's regions, found once for every round
+  std::optional<madd_start> own; // g's regions, found once for every round (unless given)
   while (out.rounds.size() < o.max_rounds &&
          out.rounds[out.chosen].over_refinement > o.target_over_refinement) {
     std::size_t found = 0;
@@ -242,8 +243,8 @@ geometric_decomposition geometric_decompose(const pslg& g, decomposition initial
         detail::tiny_feature_driver(g, f, max_area, cap, slope, found);
     if (found == 0) break;
     gradation_report rep;
-    if (!start) start.emplace(g);
-    decomposition d = gradation_controlled_decompose(*start, driver, go, mo, partitioner, &rep);
+    if (!regions) regions = &own.emplace(g);
+    decomposition d = gradation_controlled_decompose(*regions, driver, go, mo, partitioner, &rep);
     geometric_sizing_result s = geometric_sizing(d, f, max_area, go.r2, executor);
     out.rounds.push_back({d.subdomains.size(), found, slope, s.over_refinement(),
                           s.expected_triangles_F(), rep.capped});

@@ -103,16 +103,17 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
 /// Algorithm 7.1's options as the pipeline sets them (R1, R2 of o.gradation; at least n
 /// subdomains; Condition 3 T = target_subdomain_triangles for automatic N).
 template <GraphPartitioner P, Executor E>
-geometric_decomposition
-run_geometric(const pslg& domain, decomposition initial, const generate_options& o, std::size_t n,
-              const madd_options& mo, const P& partitioner, const E& executor) {
+geometric_decomposition run_geometric(const pslg& domain, decomposition initial,
+                                      const generate_options& o, std::size_t n,
+                                      const madd_options& mo, const P& partitioner,
+                                      const E& executor, const madd_start* regions) {
   gradation_options go = o.gradation;
   go.min_subdomains = n;
   if (o.subdomains == 0) go.max_subdomain_triangles = o.planning.target_subdomain_triangles;
   geometric_decompose_options gdo = o.geometric_loop;
   gdo.max_subdomains = std::max<std::size_t>(gdo.max_subdomains, 4 * n);
   return geometric_decompose(domain, std::move(initial), o.sizing, o.criteria.max_area, go, mo, gdo,
-                             partitioner, executor);
+                             partitioner, executor, regions);
 }
 
 /// Records the loop in the statistics and the gradation report. With Algorithm 8.3's F
