@@ -56,6 +56,26 @@ TEST(Lemma9, PieceLengthsForManyLengthsAndK) {
   }
 }
 
+// k = separator_term(L) for some L <= l (the shortest separator segment of the subdomain):
+// every piece lies in [2k / sqrt 3, 2k), exactly as decouple_graded checks it, also at l = L
+// where nu = 2 and the pieces sit at the lower end.
+TEST(Lemma9, PiecesUnderTheSeparatorTerm) {
+  std::mt19937_64 rng(20261127);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const double shortest = std::pow(10.0, -6.0 + 8.0 * unit(rng));
+    const double l = trial % 4 == 0 ? shortest : shortest * (1.0 + 10.0 * unit(rng));
+    const double k = pdd::separator_term(shortest);
+    const index_t nu = pdd::interface_split_count(l, k);
+    ASSERT_GE(nu, 2u) << "l " << l << " k " << k;
+    ASSERT_FALSE(l / nu < 2.0 * k / std::numbers::sqrt3) << "l " << l << " k " << k;
+    ASSERT_LT(l / nu, 2.0 * k) << "l " << l << " k " << k;
+  }
+  // L / 4 (eq. 6.1) gives 3 pieces of a segment of length L, the separator term 2
+  EXPECT_EQ(pdd::interface_split_count(1.0, 0.25), 3u);
+  EXPECT_EQ(pdd::interface_split_count(1.0, pdd::separator_term(1.0)), 2u);
+}
+
 TEST(Lemma9, ExactBoundaries) {
   // l = 2 (nu - 1) k exactly: nu pieces of length 2 (nu - 1) k / nu.
   EXPECT_EQ(pdd::interface_split_count(4.0, 1.0), 3u);
@@ -120,7 +140,10 @@ TEST(CanonicalSplit, OrientationIndependentOfWalkingDirection) {
 TEST(DecouplingParameter, Formula) {
   pdd::mesh_criteria c; // 20.7 deg, no area bound
   EXPECT_EQ(pdd::decoupling_parameter(0.3, 2.0, c), 0.3);
-  EXPECT_EQ(pdd::decoupling_parameter(0.6, 2.0, c), 0.5);
+  // the separator term sqrt 3 L / 4 (pdd::separator_term), with its relative margin 1e-9
+  EXPECT_EQ(pdd::decoupling_parameter(0.9, 2.0, c), pdd::separator_term(2.0));
+  EXPECT_NEAR(pdd::separator_term(2.0), std::sqrt(3.0) / 2.0, 1e-8);
+  EXPECT_LT(pdd::separator_term(2.0), std::sqrt(3.0) / 2.0);
   EXPECT_TRUE(std::isinf(pdd::decoupling_area_term(c)));
   c.max_area = 0.02;
   const double area_term = 0.5 * std::sqrt(0.02 / std::sqrt(2.0));
@@ -190,13 +213,15 @@ TEST(Decouple, GridDecompositionK) {
     } else {
       EXPECT_EQ(dd.path.size(), static_cast<std::size_t>(2 * n * (n - 1)));
       EXPECT_DOUBLE_EQ(dd.shortest_separator, h);
-      EXPECT_DOUBLE_EQ(dd.k, h / 4); // Proposition 12: min(lfs = h, L / 4)
+      // Proposition 12: min(lfs = h, sqrt 3 L / 4)
+      EXPECT_DOUBLE_EQ(dd.k, pdd::separator_term(h));
       for (const auto& e : dd.path)
-        EXPECT_EQ(e.pieces, 3u); // 4k <= l < 6k
+        EXPECT_EQ(e.pieces, 2u); // 2k <= l < 4k, l / 2 >= 2k / sqrt 3
     }
     o.criteria.max_area = 1e-3;
     const auto dd2 = pdd::decouple(c.parts, o);
-    EXPECT_DOUBLE_EQ(dd2.k, std::min(h / 4, 0.5 * std::sqrt(1e-3 / std::sqrt(2.0))));
+    EXPECT_DOUBLE_EQ(dd2.k,
+                     std::min(pdd::separator_term(h), 0.5 * std::sqrt(1e-3 / std::sqrt(2.0))));
     o.k_scale = 0.5;
     EXPECT_DOUBLE_EQ(pdd::decouple(c.parts, o).k, dd2.k * 0.5);
     o.k_override = 0.01;

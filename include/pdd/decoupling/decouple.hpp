@@ -81,12 +81,13 @@ std::vector<double> subdomain_lfs(const decomposition& d, const E& ex) {
 } // namespace detail
 
 /// Refines the separators of d into a decoupling path: computes
-/// k = min(lfs_min(D_H), L / 4, (1/2) sqrt(A / sqrt 2)) (Theorem 15; Proposition 12 without an
-/// area bound; see decoupling_parameter) with lfs_min taken per subdomain in parallel, and
-/// splits every separator segment into nu equal pieces, 2k/sqrt 3 <= piece < 2k (Lemma 9),
-/// from its canonical orientation. Meshing each subdomain's input() with a Ruppert-type
-/// DelaunayMesher then never splits a piece (Corollary 13), and the union of the subdomain
-/// meshes is a conforming Delaunay mesh (Proposition 7).
+/// k = min(lfs_min(D_H), sqrt 3 L / 4, (1/2) sqrt(A / sqrt 2)) (Theorem 15; Proposition 12
+/// without an area bound; the text's L / 4 relaxed, see separator_term) with lfs_min taken
+/// per subdomain in parallel, and splits every separator segment into nu equal pieces,
+/// 2k/sqrt 3 <= piece < 2k (Lemma 9), from its canonical orientation. Meshing each
+/// subdomain's input() with a Ruppert-type DelaunayMesher then never splits a piece
+/// (Corollary 13), and the union of the subdomain meshes is a conforming Delaunay mesh
+/// (Proposition 7).
 /// \tparam E an Executor (the per-subdomain lfs_min runs on it).
 /// \pre d is a decomposition as MADD makes it: loops over a shared vertex pool, every interface
 /// edge listed by the two subdomains it separates; separators meet the boundary and each other

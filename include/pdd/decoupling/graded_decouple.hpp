@@ -27,8 +27,9 @@ namespace pdd {
 /// The graded decoupling path and its parameters.
 struct graded_decoupling {
   decoupled_decomposition path;
-  /// k_i = min(lfs_min(D_i), L_i / 4, (1/2) sqrt(m(D_i) / sqrt 2)) per subdomain
-  /// (Proposition 20 with Theorem 15's terms; L_i the shortest separator segment of D_i).
+  /// k_i = min(lfs_min(D_i), sqrt 3 L_i / 4, (1/2) sqrt(m(D_i) / sqrt 2)) per subdomain
+  /// (Proposition 20 with Theorem 15's terms, pdd::separator_term; L_i the shortest separator
+  /// segment of D_i).
   std::vector<double> subdomain_k;
   /// max over interfaces of k_j / k_i (k_i <= k_j); relation 7.1 needs it below sqrt 3.
   double k_ratio_max = 1.0;
@@ -50,7 +51,8 @@ namespace detail {
 /// The largest k_j that relation 7.1 allows beside k_i on a segment of length `length`:
 /// sqrt 3 |E| / (2 nu(k_i)), nu(k_i) = interface_split_count (shrunk by a relative 1e-13
 /// so that the check |E| / nu >= 2 k_j / sqrt 3 holds in floating point). Nondecreasing in k_i,
-/// and > k_i when k_i <= |E| / 4 (nu >= 3 pieces of length >= 4 k_i / 3 > 2 k_i / sqrt 3).
+/// and > k_i when k_i <= separator_term(|E|) (pieces of length >= 2 k_i / sqrt 3, with
+/// separator_term's margin).
 inline double largest_k_beside(double length, double k_i) {
   const double nu = static_cast<double>(interface_split_count(length, k_i));
   return (length / nu) * (std::numbers::sqrt3 / 2.0) * (1.0 - 1e-13);
@@ -165,8 +167,8 @@ std::vector<double> graded_subdomain_k(const decomposition& d, const mesh_criter
 /// Condition 2, or k held down by lfs_min or a short separator on one side), o.lower_k lowers
 /// k_j to the largest value the relation allows, propagated through the neighbours (smallest
 /// k first). That is safe: k_i enters Proposition 20 only as a lower bound (Theorem 19: A is
-/// any constant below the area bound, and k <= lfs_min, L/4 still hold for a smaller k), so
-/// the kernel still meshes D_j with the field itself; the cost is shorter pieces on D_j's
+/// any constant below the area bound, and k <= lfs_min, sqrt 3 L / 4 still hold for a smaller k),
+/// so the kernel still meshes D_j with the field itself; the cost is shorter pieces on D_j's
 /// separators (graded_decoupling::lowered_k counts the subdomains).
 /// \param area_lower_bound per subdomain, a TRUE lower bound m(D_i) of the area bound over it
 /// (pdd::sizing_range; infinity: unbounded), already combined with criteria.max_area.

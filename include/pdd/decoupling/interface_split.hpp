@@ -3,8 +3,8 @@
 /// in [2k/sqrt 3, 2k), and the one formula that places the split points.
 #pragma once
 
-#include <pdd/errors.hpp>
 #include <pdd/core/point.hpp>
+#include <pdd/errors.hpp>
 
 #include <cmath>
 #include <string>
@@ -14,8 +14,10 @@ namespace pdd {
 /// The number of pieces nu of Lemma 9 for a separator segment of length `length`:
 /// 2 (nu - 1) k <= length < 2 nu k, so each of the nu equal pieces is shorter than 2k and,
 /// when k <= length / 4 (eq. 6.1, which gives nu >= 3), at least 2 (nu - 1) k / nu >= 4k/3
-/// > 2k / sqrt 3. nu is raised by one where rounding would leave a piece within a relative
-/// 1e-12 of 2k, so that pieces computed in floating point stay strictly below 2k.
+/// > 2k / sqrt 3; when k <= sqrt 3 length / 4 (pdd::separator_term), nu >= 2 and the
+/// pieces are at least 2k / sqrt 3 too. nu is raised by one where rounding would leave a
+/// piece within a relative 1e-12 of 2k, so that pieces computed in floating point stay
+/// strictly below 2k.
 /// \pre length > 0 and k > 0, both finite.
 /// \throws pdd::decoupling_error on a violated precondition; pdd::limit_error when nu would
 /// exceed 2^31. Complexity O(1).

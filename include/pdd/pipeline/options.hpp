@@ -87,7 +87,7 @@ struct generate_options {
   /// the field's minimum over the domain's bounding box (generate_statistics::graded_fallback
   /// says why). The kernel meshes each subdomain with the field itself either way.
   /// Without a field (criteria.max_area alone) the decoupling path is the graded one too, on
-  /// N-way MADD's subdomains: m(D_i) = max_area, k_i = min(lfs_min(D_i), L_i / 4, the area
+  /// N-way MADD's subdomains: m(D_i) = max_area, k_i = min(lfs_min(D_i), sqrt 3 L_i / 4, the area
   /// term) per subdomain, lowered where relation 7.1 needs it, so a short separator or a small
   /// feature holds k down only beside it (one global k where k_scale or k_override are set).
   any_sizing sizing{};

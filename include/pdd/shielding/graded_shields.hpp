@@ -45,13 +45,13 @@ inline double graded_shield_length(double phi_deg, double m_F) {
 /// directly, as in Algorithm 8.2: the terms of eq. 8.6. For a field that meets condition (ii)
 /// they do not bind, and l_i is Theorem 26's. The cap sqrt 3 k_i is the uniform path's
 /// safeguard (see pdd::shield_decomposition): the kernel meshes D_i' with ratio bound B and
-/// k_i = min(lfs_min(D_i), L_i / 4, (1/2) sqrt(m_F / max(B, sqrt 2))) (Theorem 15's terms per
-/// subdomain, L_i its shortest separator segment); Theorem 26 has only the area term with
-/// B = sqrt 2, and l_i <= sqrt 3 k_i keeps |b'c'| < 2 k_i, the length Proposition 20 lets
-/// Ruppert-type refinement keep, where lfs_min, a short separator or B > sqrt 2 hold k_i below
-/// k_F. Where a safeguard binds, |b'c'| may fall below k_F (Theorem 26 (c)): the decoupling path
-/// is then built for lfs_min(D_i') (k_i is recomputed on the shielded subdomain), which only
-/// shortens D_i's interface pieces. Complexity O(number of angles).
+/// k_i = min(lfs_min(D_i), sqrt 3 L_i / 4, (1/2) sqrt(m_F / max(B, sqrt 2))) (Theorem 15's terms
+/// per subdomain, L_i its shortest separator segment); Theorem 26 has only the area term with B =
+/// sqrt 2, and l_i <= sqrt 3 k_i keeps |b'c'| < 2 k_i, the length Proposition 20 lets Ruppert-type
+/// refinement keep, where lfs_min, a short separator or B > sqrt 2 hold k_i below k_F. Where a
+/// safeguard binds, |b'c'| may fall below k_F (Theorem 26 (c)): the decoupling path is then built
+/// for lfs_min(D_i') (k_i is recomputed on the shielded subdomain), which only shortens D_i's
+/// interface pieces. Complexity O(number of angles).
 inline double graded_subdomain_shield_length(const std::vector<std::vector<double>>& theta,
                                              double lfs, double m_F, double max_l) {
   double phi = 0.0;
