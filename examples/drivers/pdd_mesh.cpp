@@ -280,6 +280,7 @@ void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) 
   j["sizing_rounds"] = gs.sizing_rounds; // the geometric path's loop (Algorithm 8.3)
   j["estimated_over_refinement"] = gs.estimated_over_refinement;
   j["sizing_round_used"] = gs.sizing_round_used;
+  j["geometric_cap"] = gs.geometric_cap; // the loop's cap on subdomains (0: not geometric)
   j["kernel"] = o.kernel;
   j["k"] = gs.k;
   j["split_points"] = gs.split_points;

@@ -37,6 +37,7 @@
 #include <pdd/pipeline/detail/plan.hpp>
 #include <pdd/pipeline/detail/record.hpp>
 #include <pdd/pipeline/detail/sizing_plan.hpp>
+#include <pdd/pipeline/detail/uniform_path.hpp>
 #include <pdd/pipeline/detail/whole_domain.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/planning.hpp>
@@ -116,6 +117,7 @@ public:
     if (general_) return; // the geometric path measures lfs_min on closed loops
     geometric_plan_ = detail::choose_geometric_path(
         domain_, options_, std::min(options_.criteria.max_area, sizing_min_), stats_);
+    geometric_reason_ = stats_.plan_reason;
   }
 
   /// True when the domain is not one of closed loops (pdd::has_closed_loops): Triangle's rule,
@@ -158,6 +160,8 @@ public:
       mo.subdomains = stats_.subdomains;
       mo.max_subdomain_area = std::numeric_limits<double>::infinity();
       mo.threads = options_.threads;
+      madd_used_ = mo;
+      graded_madd_ = graded_plan_;
       try {
         run_madd(mo);
       } catch (const decomposition_error& e) {
@@ -169,7 +173,7 @@ public:
                                   e.what() + ")");
       }
     }
-    start_.reset(); // MADD's regions are not needed again
+    if (!geometric_plan_) start_.reset(); // MADD's regions (the geometric path: decouple())
     stats_.timings.decompose = seconds_since(t0);
     decomposed_ = true;
     return decomposition_;
@@ -182,28 +186,21 @@ public:
     if (decoupled_) return decoupled_decomposition_;
     decompose();
     const auto t0 = std::chrono::steady_clock::now();
+    const double decompose_before = stats_.timings.decompose; // a second MADD run adds to it
     if (stats_.subdomains > 1) {
-      // Algorithm 8.2: shield the small angles of every subdomain (graded: Theorem 26's l_i per
-      // subdomain; uniform: one bound); k then comes from the shielded subdomains D_i'.
-      std::vector<subdomain_shields> shields;
-      // one k_i per subdomain (Theorem 22), for a field and for the uniform bound alike: a
-      // short separator, a narrow subdomain or a small feature then lowers k only in the
-      // subdomains beside it, not everywhere; the uniform path only for a set k
-      if (!try_graded_path(shields)) shields = decouple_uniform();
-      decoupled_decomposition_.shields.resize(shields.size());
-      for (std::size_t s = 0; s < shields.size(); ++s)
-        decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);
-      detail::record_path(decoupled_decomposition_, stats_);
-      if (options_.subdomains == 0 &&
-          static_cast<double>(stats_.split_points) >
-              options_.planning.max_split_point_fraction * stats_.estimated_triangles)
+      build_path();
+      // automatic N on the geometric path: a smaller cap once before falling back
+      if (too_many_split_points() && decompose_geometric_again() && stats_.subdomains > 1)
+        build_path();
+      if (too_many_split_points())
         fall_back_to_whole_domain( // the geometric plan's reason stays, with its rounds
             (geometric_plan_ ? stats_.plan_reason + "; " : std::string()) +
             detail::split_point_reason(stats_.split_points, stats_.estimated_triangles,
                                        options_.planning));
     }
+    start_.reset(); // MADD's regions are not needed again
     stats_.path = detail::path_name(stats_, geometric_plan_);
-    stats_.timings.decouple = seconds_since(t0);
+    stats_.timings.decouple = seconds_since(t0) - (stats_.timings.decompose - decompose_before);
     decoupled_ = true;
     return decoupled_decomposition_;
   }
@@ -267,6 +264,51 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
+  /// The decoupling path on decomposition_ with its shields (Algorithm 8.2; k from the shielded
+  /// D_i'), recorded: one k_i per subdomain (Theorem 22) for a field and for the uniform bound
+  /// alike, so a short separator or a small feature lowers k only beside it; one k (Theorem 15)
+  /// only where k is set.
+  void build_path() {
+    std::vector<subdomain_shields> shields;
+    if (!try_graded_path(shields))
+      decoupled_decomposition_ = detail::build_uniform_path(
+          decomposition_, options_.decoupling, decoupling_criteria(), executor_, shields);
+    decoupled_decomposition_.shields.resize(shields.size());
+    for (std::size_t s = 0; s < shields.size(); ++s)
+      decoupled_decomposition_.shields[s] = std::move(shields[s].triangles);
+    detail::record_path(decoupled_decomposition_, stats_);
+  }
+
+  /// Automatic N with too many split points (detail::too_many_split_points: one subdomain).
+  bool too_many_split_points() const {
+    return options_.subdomains == 0 && detail::too_many_split_points(stats_, options_.planning);
+  }
+
+  /// The geometric path with too many split points: MADD and the loop once more with half the
+  /// loop's cap (the cap trades the grading towards tiny features against separator length; on
+  /// the Bahamas at 2M triangles 4096 left 108K split points, 5.4 % of the estimate, 2048 left
+  /// 95K). False (nothing changed) off that path, after the second try, or where half the cap
+  /// is below 4N or would not bind.
+  bool decompose_geometric_again() {
+    const std::size_t cap = stats_.geometric_cap / 2;
+    if (!geometric_plan_ || !start_ || geometric_retried_ || cap < 4 * madd_used_.subdomains ||
+        stats_.subdomains <= cap)
+      return false;
+    const auto t0 = std::chrono::steady_clock::now();
+    geometric_retried_ = true;
+    stats_.plan_reason =
+        geometric_reason_ + "; " + detail::geometric_retry_reason(stats_, options_.planning, cap);
+    if (options_.geometric_field == geometric_mesh_field::algorithm_8_3)
+      options_.sizing = user_sizing_;
+    options_.geometric_loop.max_subdomains = cap;
+    graded_plan_ = graded_madd_;
+    gradation_ = {};
+    decoupled_decomposition_ = {};
+    madd_with(madd_used_);
+    stats_.timings.decompose += seconds_since(t0);
+    return true;
+  }
+
   /// Stage 1 of the graded method: Algorithm 7.1 (see generate_options::gradation) into
   /// decomposition_, with its measurements in gradation_ and the statistics.
   void decompose_graded(const madd_options& mo) {
@@ -291,31 +333,6 @@ private:
     if (detail::record_geometric(gd, options_, stats_, gradation_)) fall_back_to_whole_domain("");
   }
 
-  /// The decoupling parameter of the unshielded decomposition (caps the shields' l_i through
-  /// pdd::shield_length_cap, see pdd::shield_decomposition).
-  double unshielded_k() const {
-    if (options_.decoupling.k_override > 0.0) return options_.decoupling.k_override;
-    const std::vector<double> lfs = detail::subdomain_lfs(decomposition_, executor_);
-    return options_.decoupling.k_scale *
-           decoupling_parameter(*std::min_element(lfs.begin(), lfs.end()),
-                                detail::shortest_interface_edge(decomposition_),
-                                decoupling_criteria());
-  }
-
-  /// The uniform path: the small angles shielded with the domain-wide bound
-  /// (pdd::shield_decomposition, l capped by shield_length_cap of the unshielded k), then
-  /// pdd::decouple into decoupled_decomposition_. Returns the shields.
-  std::vector<subdomain_shields> decouple_uniform() {
-    std::vector<subdomain_shields> shields;
-    if (detail::has_small_angles(decomposition_))
-      shields = shield_decomposition(decomposition_, decoupling_criteria().max_area, executor_,
-                                     shield_length_cap(unshielded_k()));
-    decoupling_options dopt{decoupling_criteria(), options_.decoupling.k_override,
-                            options_.decoupling.k_scale};
-    decoupled_decomposition_ = pdd::decouple(decomposition_, dopt, executor_);
-    return shields;
-  }
-
   /// Builds the graded path with shields (detail::build_graded_path: Theorem 26's l_i per
   /// subdomain, then Theorem 22's path) into decoupled_decomposition_ and `shields`; false
   /// (with the reason in the statistics, nothing changed) when k is overridden or scaled.
@@ -337,8 +354,6 @@ private:
     return true;
   }
 
-  /// The criteria the decoupling path and the shields are built for: max_area lowered to the
-  /// sizing field's minimum over the domain (the interim rule, see generate_options::sizing).
   /// MADD (graded or not, geometric adoption) with mo; on a general domain the separators keep
   /// 4 k_area from its dangling segments and isolated vertices (madd_options::feature_clearance),
   /// or, when N cannot be reached so, the splits' boundary spacing h.
@@ -370,6 +385,8 @@ private:
     if (geometric_plan_) adopt_geometric(mo);
   }
 
+  /// The criteria the decoupling path and the shields are built for: max_area lowered to the
+  /// sizing field's minimum over the domain (the interim rule, see generate_options::sizing).
   mesh_criteria decoupling_criteria() const {
     mesh_criteria c = options_.criteria;
     c.max_area = std::min(c.max_area, sizing_min_);
@@ -401,6 +418,11 @@ private:
   bool graded_plan_ = false;
   /// The geometric path is planned / used (options_.sizing: its F, user_sizing_: the user's).
   bool geometric_plan_ = false;
+  /// The geometric path: the plan's reason, MADD's options and graded plan before the loop, and
+  /// whether it ran a second time (decompose_geometric_again).
+  std::string geometric_reason_;
+  madd_options madd_used_;
+  bool graded_madd_ = false, geometric_retried_ = false;
   /// The domain is not one of closed loops (see general_domain()).
   bool general_ = false;
   std::optional<madd_start> start_; ///< until decompose(): the regions MADD starts from

@@ -135,6 +135,44 @@ TEST(GeometricPipeline, RequestedNAndTheModes) {
   EXPECT_EQ(single.statistics().plan_reason, "one subdomain requested");
 }
 
+// Automatic N on the geometric path with more split points than the plan allows: MADD and the
+// loop run once more with half the loop's cap, where it binds, before the plan falls back to
+// one subdomain (a split-point limit of 0 makes both tries fail here; the Bahamas at 2M
+// triangles, where the second succeeds, is tests/long/geometric_bahamas_test.cpp).
+TEST(GeometricPipeline, SecondTryWithHalfTheCapBeforeFallingBack) {
+  const pdd::pslg g = notched_square();
+  pdd::generate_options o = automatic_options(1);
+  o.geometric_loop.max_subdomains = 256; // binds: uncapped, the loop makes ~800 subdomains
+  {
+    pdd::pipeline<> p(g, o);
+    p.decouple();
+    const pdd::generate_statistics& st = p.statistics();
+    EXPECT_EQ(st.path, "geometric") << st.plan_reason;
+    EXPECT_EQ(st.geometric_cap, 256u);
+    EXPECT_EQ(st.subdomains, 256u);
+    EXPECT_EQ(st.plan_reason.find("again"), std::string::npos) << st.plan_reason;
+  }
+  o.planning.max_split_point_fraction = 0.0;
+  {
+    pdd::pipeline<> p(g, o);
+    p.decouple();
+    const pdd::generate_statistics& st = p.statistics();
+    EXPECT_EQ(st.path, "monolithic");
+    EXPECT_TRUE(st.monolithic_fallback);
+    EXPECT_EQ(st.geometric_cap, 128u) << "once, with half the cap";
+    EXPECT_NE(st.plan_reason.find("again with a cap of 128;"), std::string::npos) << st.plan_reason;
+    EXPECT_NE(st.plan_reason.find("decoupling would not pay"), std::string::npos) << st.plan_reason;
+  }
+  // where half the cap would not bind, the same decomposition is not made again
+  o.geometric_loop.max_subdomains = 4096;
+  pdd::pipeline<> p(g, o);
+  p.decouple();
+  EXPECT_EQ(p.statistics().path, "monolithic");
+  EXPECT_EQ(p.statistics().geometric_cap, 4096u);
+  EXPECT_EQ(p.statistics().plan_reason.find("again"), std::string::npos)
+      << p.statistics().plan_reason;
+}
+
 } // namespace
 
 } // namespace geometric_pipeline_test

@@ -64,6 +64,7 @@ struct geometric_decomposition {
   geometric_sizing_result sizing;
   std::vector<geometric_round> rounds;
   std::size_t chosen = 0; ///< index in rounds of the decomposition returned
+  std::size_t cap = 0;    ///< the cap on subdomains the refined rounds ran under
 };
 
 /// The driving field of a refined round: min(max_area, f(x), min over tiny-feature vertices v
@@ -235,6 +236,7 @@ geometric_decompose(const pslg& g, decomposition initial, const any_sizing& f, d
   go.max_area = max_area;
   go.min_subdomain_triangles = 0.0; // the driver is continuous: 7.1 terminates (Lemma 17)
   go.max_subdomains = std::max(o.max_subdomains, go.min_subdomains);
+  out.cap = go.max_subdomains;
   std::optional<madd_start> own; // g's regions, found once for every round (unless given)
   while (out.rounds.size() < o.max_rounds &&
          out.rounds[out.chosen].over_refinement > o.target_over_refinement) {

@@ -81,6 +81,9 @@ struct generate_statistics {
   std::size_t sizing_rounds = 0;
   std::vector<double> estimated_over_refinement;
   std::size_t sizing_round_used = 0;
+  /// The geometric loop's cap on subdomains that made the decomposition used (the option's, or
+  /// half of it after a second try, see generate_options::geometric_loop); 0 off the path.
+  std::size_t geometric_cap = 0;
 };
 
 } // namespace pdd

@@ -61,6 +61,21 @@ inline std::string split_point_reason(std::size_t split_points, double estimated
          "one subdomain";
 }
 
+/// More than p.max_split_point_fraction of the estimate in split points on N > 1 subdomains.
+inline bool too_many_split_points(const generate_statistics& st, const planning_options& p) {
+  return st.subdomains > 1 &&
+         static_cast<double>(st.split_points) > p.max_split_point_fraction * st.estimated_triangles;
+}
+
+/// The plan's reason for the geometric loop's second run, with a cap of `cap` subdomains.
+inline std::string geometric_retry_reason(const generate_statistics& st, const planning_options& p,
+                                          std::size_t cap) {
+  return std::to_string(st.split_points) + " split points with the loop's cap of " +
+         std::to_string(st.geometric_cap) + " subdomains, more than " +
+         number_text(100.0 * p.max_split_point_fraction) +
+         " % of the estimate: MADD and the loop again with a cap of " + std::to_string(cap);
+}
+
 /// Whether the geometric path is planned (generate_options::geometric_sizing); writes the
 /// reason (and "monolithic" for N = 1) into the statistics. `area_min` is the smallest area
 /// bound over the domain (min of criteria.max_area and the field's lower bound).
@@ -99,6 +114,11 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
   return true;
 }
 
+/// The geometric loop's cap on subdomains for a plan of n: the option's, at least 4n.
+inline std::size_t geometric_cap(const generate_options& o, std::size_t n) {
+  return std::max<std::size_t>(o.geometric_loop.max_subdomains, 4 * n);
+}
+
 /// The geometric path's decomposition: pdd::geometric_decompose from `initial` with
 /// Algorithm 7.1's options as the pipeline sets them (R1, R2 of o.gradation; at least n
 /// subdomains; Condition 3 T = target_subdomain_triangles for automatic N).
@@ -111,7 +131,7 @@ geometric_decomposition run_geometric(const pslg& domain, decomposition initial,
   go.min_subdomains = n;
   if (o.subdomains == 0) go.max_subdomain_triangles = o.planning.target_subdomain_triangles;
   geometric_decompose_options gdo = o.geometric_loop;
-  gdo.max_subdomains = std::max<std::size_t>(gdo.max_subdomains, 4 * n);
+  gdo.max_subdomains = geometric_cap(o, n);
   return geometric_decompose(domain, std::move(initial), o.sizing, o.criteria.max_area, go, mo, gdo,
                              partitioner, executor, regions);
 }
@@ -126,6 +146,7 @@ inline bool record_geometric(const geometric_decomposition& gd, const generate_o
                              generate_statistics& st, gradation_report& rep) {
   st.sizing_rounds = gd.rounds.size();
   st.sizing_round_used = gd.chosen;
+  st.geometric_cap = gd.cap;
   st.estimated_over_refinement.clear();
   for (const geometric_round& r : gd.rounds)
     st.estimated_over_refinement.push_back(r.over_refinement);
