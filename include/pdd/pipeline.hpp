@@ -301,6 +301,7 @@ private:
     if (options_.geometric_field == geometric_mesh_field::algorithm_8_3)
       options_.sizing = user_sizing_;
     options_.geometric_loop.max_subdomains = cap;
+    stats_.estimated_triangles = estimate_.triangles; // F's rounds scale it (record_geometric)
     graded_plan_ = graded_madd_;
     gradation_ = {};
     decoupled_decomposition_ = {};

@@ -163,6 +163,22 @@ TEST(GeometricPipeline, SecondTryWithHalfTheCapBeforeFallingBack) {
     EXPECT_NE(st.plan_reason.find("again with a cap of 128;"), std::string::npos) << st.plan_reason;
     EXPECT_NE(st.plan_reason.find("decoupling would not pay"), std::string::npos) << st.plan_reason;
   }
+  // with Algorithm 8.3's F the plan's estimate counts F's triangles of the run used (the
+  // estimated over-refinement of its round), once, not once per try
+  o.geometric_field = pdd::geometric_mesh_field::algorithm_8_3;
+  o.max_geometric_over_refinement = 1e9; // F's estimate never falls back here
+  {
+    pdd::pipeline<> p(g, o);
+    const double estimate = p.statistics().estimated_triangles;
+    p.decouple();
+    const pdd::generate_statistics& st = p.statistics();
+    EXPECT_EQ(st.geometric_cap, 128u);
+    ASSERT_NE(st.plan_reason.find("again with a cap of 128;"), std::string::npos) << st.plan_reason;
+    const double rho = st.estimated_over_refinement[st.sizing_round_used];
+    EXPECT_GT(rho, 0.0);
+    EXPECT_NEAR(st.estimated_triangles, estimate * (1.0 + rho), 1e-9 * estimate);
+  }
+  o.geometric_field = pdd::geometric_mesh_field::user;
   // where half the cap would not bind, the same decomposition is not made again
   o.geometric_loop.max_subdomains = 4096;
   pdd::pipeline<> p(g, o);

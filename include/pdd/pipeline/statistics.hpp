@@ -81,8 +81,8 @@ struct generate_statistics {
   std::size_t sizing_rounds = 0;
   std::vector<double> estimated_over_refinement;
   std::size_t sizing_round_used = 0;
-  /// The geometric loop's cap on subdomains that made the decomposition used (the option's, or
-  /// half of it after a second try, see generate_options::geometric_loop); 0 off the path.
+  /// The geometric loop's cap on subdomains in its last run (the option's, at least 4N, or half
+  /// of it after a second try; kept after a fallback to one subdomain); 0 where it did not run.
   std::size_t geometric_cap = 0;
 };
 
