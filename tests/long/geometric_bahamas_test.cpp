@@ -49,13 +49,19 @@ pdd::triangle_mesh mesh_verified(const pdd::pslg& g, const pdd::generate_options
   return m;
 }
 
+/// ../shared/data/bahamas_islands.poly, or empty when the shared data is absent.
+std::filesystem::path bahamas_path() {
+  const auto dir = pdd::test::shared_data_dir();
+  if (dir.empty() || !std::filesystem::exists(dir / "bahamas_islands.poly")) return {};
+  return dir / "bahamas_islands.poly";
+}
+
 } // namespace
 
 TEST(LongGeometric, BahamasAutomaticVerifiedAndThreadIndependent) {
-  const auto dir = pdd::test::shared_data_dir();
-  if (dir.empty() || !std::filesystem::exists(dir / "bahamas_islands.poly"))
-    GTEST_SKIP() << "no shared data: 0 runs checked";
-  const pdd::pslg g = pdd::read_poly((dir / "bahamas_islands.poly").string());
+  const std::filesystem::path path = bahamas_path();
+  if (path.empty()) GTEST_SKIP() << "no shared data: 0 runs checked";
+  const pdd::pslg g = pdd::read_poly(path.string());
   pdd::generate_options o;
   o.criteria.max_area = 2e-5;
   o.threads = 1;
@@ -82,10 +88,9 @@ TEST(LongGeometric, BahamasAutomaticVerifiedAndThreadIndependent) {
 // 5 % of the estimate; MADD and the loop again with a cap of 2048 leave 95K, and the run
 // decouples instead of falling back to one subdomain.
 TEST(LongGeometric, BahamasAt2MDecouplesOnTheSecondTry) {
-  const auto dir = pdd::test::shared_data_dir();
-  if (dir.empty() || !std::filesystem::exists(dir / "bahamas_islands.poly"))
-    GTEST_SKIP() << "no shared data: 0 runs checked";
-  const pdd::pslg g = pdd::read_poly((dir / "bahamas_islands.poly").string());
+  const std::filesystem::path path = bahamas_path();
+  if (path.empty()) GTEST_SKIP() << "no shared data: 0 runs checked";
+  const pdd::pslg g = pdd::read_poly(path.string());
   pdd::generate_options o;
   o.criteria.max_area = 4.8e-5;
   o.threads = 2;
