@@ -3,10 +3,10 @@
 // (the decomposition graded towards the tiny features by Algorithm 8.3's loop, meshed with the
 // user's bound and the graded path's k_i <= lfs_min(D_i)); the mesh is verified against the
 // field used (exact Delaunay, conformity, area bound, unshielded quality), bitwise identical at
-// 1 and 2 threads, and within 10 % of the monolithic kernel's triangle count (measured +4.0 %
-// at 1.92e-5, benchmarks/results/real-geometries.md). At 4.8e-5 (about 2M triangles) the loop's
-// default cap leaves too many split points and the second try with half the cap decouples
-// (measured +11.7 %). Skips when ../shared is absent.
+// 1 and 2 threads, and within the 3 % of the monolithic kernel's triangle count
+// (measured +2.5 %; +2.4 % at 1.92e-5, benchmarks/results/real-geometries.md). At 4.8e-5
+// (about 2M triangles) the run decouples within the split-point limit (measured +7.1 %).
+// Skips when ../shared is absent.
 #include <pdd/io/poly.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -81,13 +81,14 @@ TEST(LongGeometric, BahamasAutomaticVerifiedAndThreadIndependent) {
   pdd::generate_statistics whole;
   const double ratio = static_cast<double>(one.triangles.size()) /
                        static_cast<double>(mesh_verified(g, o, whole).triangles.size());
-  EXPECT_LT(ratio, 1.10) << "decoupled vs monolithic triangles";
+  EXPECT_LT(ratio, 1.03) << "decoupled vs monolithic triangles";
 }
 
-// About 2M triangles: the first decomposition (cap 4096) leaves 108K split points, more than
-// 5 % of the estimate; MADD and the loop again with a cap of 2048 leave 95K, and the run
-// decouples instead of falling back to one subdomain.
-TEST(LongGeometric, BahamasAt2MDecouplesOnTheSecondTry) {
+// About 2M triangles: the loop's decomposition leaves 97K split points, within 5 % of the
+// estimate (planning.max_split_point_fraction), and the run decouples instead of falling back
+// to one subdomain (before the driver's slope 1/32 it took the second try with a cap of 2048
+// and gave +11.7 %; the second try is tested on the notched square, geometric_pipeline_test).
+TEST(LongGeometric, BahamasAt2MDecouples) {
   const std::filesystem::path path = bahamas_path();
   if (path.empty()) GTEST_SKIP() << "no shared data: 0 runs checked";
   const pdd::pslg g = pdd::read_poly(path.string());
@@ -97,8 +98,6 @@ TEST(LongGeometric, BahamasAt2MDecouplesOnTheSecondTry) {
   pdd::generate_statistics st;
   const pdd::triangle_mesh two = mesh_verified(g, o, st);
   EXPECT_EQ(st.path, "geometric") << st.plan_reason;
-  EXPECT_EQ(st.geometric_cap, 2048u);
-  EXPECT_NE(st.plan_reason.find("again with a cap of 2048"), std::string::npos) << st.plan_reason;
   EXPECT_LE(static_cast<double>(st.split_points),
             o.planning.max_split_point_fraction * st.estimated_triangles);
   o.threads = 1;
@@ -110,7 +109,7 @@ TEST(LongGeometric, BahamasAt2MDecouplesOnTheSecondTry) {
                        static_cast<double>(mesh_verified(g, o, whole).triangles.size());
   std::printf("bahamas 2M: %zu subdomains, %zu split points, %zu triangles, %.2f %% over\n",
               st.subdomains, st.split_points, two.triangles.size(), 100.0 * (ratio - 1.0));
-  EXPECT_LT(ratio, 1.15) << "decoupled vs monolithic triangles";
+  EXPECT_LT(ratio, 1.10) << "decoupled vs monolithic triangles";
 }
 
 } // namespace geometric_bahamas_test
