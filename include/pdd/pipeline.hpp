@@ -12,14 +12,10 @@
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
-#include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
-#include <pdd/decoupling/graded_decouple.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/loops.hpp>
 #include <pdd/geometry/properties.hpp>
-#include <pdd/geometry/validate.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/decomposition.hpp>
@@ -36,7 +32,6 @@
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
 #include <pdd/pipeline/detail/record.hpp>
-#include <pdd/pipeline/detail/sizing_plan.hpp>
 #include <pdd/pipeline/detail/uniform_path.hpp>
 #include <pdd/pipeline/detail/whole_domain.hpp>
 #include <pdd/pipeline/options.hpp>
@@ -46,7 +41,6 @@
 #include <pdd/shielding/shield_decomposition.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 #include <pdd/sizing/sizing_range.hpp>
-#include <pdd/sizing/uniform.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -95,21 +89,15 @@ public:
     area_ = read.area;
     estimate_ = read.estimate;
     start_ = std::move(read.start);
+    stats_.threads = executor_.concurrency();
+    stats_.estimated_triangles = estimate_.triangles;
+    stats_.general_domain = general_;
     const detail::general_domain_plan general_plan =
         general_ ? detail::plan_general_domain(start_ ? &*start_ : nullptr, options_)
                  : detail::general_domain_plan{};
-    stats_.threads = executor_.concurrency();
-    stats_.estimated_triangles = estimate_.triangles;
-    // without any area bound the mesh is graded by the geometry alone: the kernel meshes it
-    const bool bounded = options_.sizing || std::isfinite(options_.criteria.max_area);
-    stats_.subdomains = options_.subdomains != 0 ? options_.subdomains
-                        : bounded ? automatic_subdomains(stats_.estimated_triangles, stats_.threads,
-                                                         options_.planning)
-                                  : 1;
-    stats_.general_domain = general_;
-    if (general_) // from the faces, or whole
-      stats_.subdomains =
-          detail::general_domain_subdomains(stats_.subdomains, general_plan, stats_.plan_reason);
+    stats_.subdomains =
+        detail::planned_subdomains(options_, stats_.estimated_triangles, stats_.threads,
+                                   general_ ? &general_plan : nullptr, stats_.plan_reason);
     // the graded method (Algorithm 7.1 + graded path with Theorem 26's shields) where k is
     // neither scaled nor overridden
     graded_plan_ = options_.sizing && stats_.subdomains > 1 &&
@@ -342,16 +330,8 @@ private:
       stats_.graded_fallback = "decoupling.k_override or decoupling.k_scale set";
       return false;
     }
-    const std::vector<double> lo = detail::subdomain_area_bounds(
-        gradation_, decomposition_, options_.sizing, options_.criteria.max_area, executor_);
-    detail::graded_path_build b =
-        detail::build_graded_path(decomposition_, options_.criteria, lo, executor_);
-    shields = std::move(b.shields);
-    decoupled_decomposition_ = std::move(b.graded.path);
-    stats_.subdomain_k = std::move(b.graded.subdomain_k);
-    stats_.k_ratio_max = b.graded.k_ratio_max;
-    stats_.lowered_k = b.graded.lowered_k;
-    stats_.graded_path = true;
+    decoupled_decomposition_ = detail::graded_pipeline_path(decomposition_, options_, gradation_,
+                                                            executor_, stats_, shields);
     return true;
   }
 

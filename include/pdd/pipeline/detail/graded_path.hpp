@@ -9,11 +9,14 @@
 #include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/pipeline/detail/sizing_plan.hpp>
+#include <pdd/pipeline/options.hpp>
+#include <pdd/pipeline/statistics.hpp>
 #include <pdd/shielding/graded_shields.hpp>
 #include <pdd/shielding/shield_decomposition.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 namespace pdd::detail {
@@ -63,6 +66,27 @@ graded_path_build build_graded_path(decomposition& d, const mesh_criteria& crite
   }
   b.graded = decouple_graded(d, criteria, area_bounds, executor);
   return b;
+}
+
+/// The pipeline's graded path on d: m(D_i) from subdomain_area_bounds (Algorithm 7.1's bounds,
+/// else o.sizing's minima; at most o.criteria.max_area), then build_graded_path; the shields
+/// go to `shields` and k_i (with the largest ratio across an interface and the subdomains a
+/// short separator lowered) to `st`.
+/// \throws as build_graded_path.
+template <Executor E>
+decoupled_decomposition graded_pipeline_path(decomposition& d, const generate_options& o,
+                                             const gradation_report& gradation, const E& executor,
+                                             generate_statistics& st,
+                                             std::vector<subdomain_shields>& shields) {
+  const std::vector<double> lo =
+      subdomain_area_bounds(gradation, d, o.sizing, o.criteria.max_area, executor);
+  graded_path_build b = build_graded_path(d, o.criteria, lo, executor);
+  shields = std::move(b.shields);
+  st.subdomain_k = std::move(b.graded.subdomain_k);
+  st.k_ratio_max = b.graded.k_ratio_max;
+  st.lowered_k = b.graded.lowered_k;
+  st.graded_path = true;
+  return std::move(b.graded.path);
 }
 
 } // namespace pdd::detail

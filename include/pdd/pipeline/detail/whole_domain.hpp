@@ -12,11 +12,13 @@
 #include <pdd/madd/madd_start.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/options.hpp>
+#include <pdd/pipeline/planning.hpp>
 #include <pdd/shielding/apply_shields.hpp>
 #include <pdd/shielding/shield.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <string>
 #include <utility>
@@ -64,6 +66,20 @@ inline std::size_t general_domain_subdomains(std::size_t planned, const general_
     reason += "; N raised from " + std::to_string(planned) + " to " + std::to_string(p.faces) +
               ", one subdomain per face at least";
   return std::max(planned, p.faces);
+}
+
+/// The plan's N: o.subdomains when set; else automatic_subdomains of the estimate when some
+/// area bound is given, 1 without any (the kernel then grades the mesh by the geometry alone);
+/// on a domain not of closed loops (`general`: its plan) as general_domain_subdomains, which
+/// writes the plan's `reason`.
+inline std::size_t planned_subdomains(const generate_options& o, double estimated_triangles,
+                                      unsigned threads, const general_domain_plan* general,
+                                      std::string& reason) {
+  const bool bounded = o.sizing || std::isfinite(o.criteria.max_area);
+  const std::size_t n = o.subdomains != 0 ? o.subdomains
+                        : bounded ? automatic_subdomains(estimated_triangles, threads, o.planning)
+                                  : 1;
+  return general ? general_domain_subdomains(n, *general, reason) : n;
 }
 
 /// The kernel on the whole domain, markers 0: a general domain as it is; a domain of closed
