@@ -1,8 +1,9 @@
 // General PSLGs (Triangle's rule, issue 13): a layered domain with regional attributes
 // (internal constraints, vertices of degree 3 and 4), holes that touch each other and the outer
-// boundary at pinch vertices, a T-junction (brick wall) grid, a combined one (dangling crack,
-// isolated well, internal boundary), and random arrangements with internal and dangling
-// constraints and isolated vertices, and random maps (faces of a jittered grid by colour).
+// boundary at pinch vertices (sectors >= 60 deg, small sectors, random ones), a T-junction
+// (brick wall) grid, a combined one (dangling crack, isolated well, internal boundary), and
+// random arrangements with internal and dangling constraints and isolated vertices, and random
+// maps (faces of a jittered grid by colour).
 #pragma once
 
 #include <pdd/core/pslg.hpp>
@@ -63,6 +64,85 @@ inline pslg pinched_rings() {
   g.add_segment(a, b);
   g.add_segment(b, 1);
   g.holes = {{3.5, 5}, {6.5, 5}, {5, 1.2}};
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// Adds a triangular hole (apex, apex + r at angles a1, a2 deg) touching the rest of g at its
+/// apex, with its hole point at the centroid.
+inline void add_wedge_hole(pslg& g, index_t apex, double a1, double a2, double r) {
+  const point c = g.vertices[apex];
+  const auto at = [&](double deg) {
+    const double t = deg * std::numbers::pi / 180.0;
+    return point{c.x + r * std::cos(t), c.y + r * std::sin(t)};
+  };
+  const point p = at(a1), q = at(a2);
+  const index_t ip = g.add_vertex(p), iq = g.add_vertex(q);
+  g.add_segment(apex, ip);
+  g.add_segment(ip, iq);
+  g.add_segment(iq, apex);
+  g.holes.push_back({(c.x + p.x + q.x) / 3.0, (c.y + p.y + q.y) / 3.0});
+}
+
+/// A 10 x 10 square with small angles at its pinch vertices: a triangular hole touching the
+/// bottom side at (5, 0) leaves sectors of 14 and 135 deg there; four triangular holes touching
+/// at (5, 6) leave the face sectors of 20, 35, 50 and 75 deg between them.
+inline pslg pinched_sectors() {
+  pslg g;
+  g.add_loop(std::vector<point>{{0, 0}, {5, 0}, {10, 0}, {10, 10}, {0, 10}});
+  add_wedge_hole(g, 1, 14, 45, 1.5);
+  const index_t p = g.add_vertex({5, 6});
+  double at = 10;
+  for (const double sector : {20.0, 35.0, 50.0, 75.0}) {
+    add_wedge_hole(g, p, at, at + 45, 2);
+    at += 45 + sector;
+  }
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// A random domain of pinch vertices in a 10 x 10 square: up to two triangular holes touching
+/// the bottom side at one vertex each, and one to three vertices inside where two to four
+/// triangular holes touch; the face's sectors between them are random, down to about 2 deg, so
+/// many fall below 60 deg. Valid by construction. Deterministic for a seed.
+inline pslg random_pinched(std::uint32_t seed) {
+  std::mt19937 rng(seed);
+  const auto uniform = [&](double lo, double hi) {
+    return std::uniform_real_distribution<double>(lo, hi)(rng);
+  };
+  const auto count = [&](int lo, int hi) {
+    return std::uniform_int_distribution<int>(lo, hi)(rng);
+  };
+  pslg g;
+  std::vector<point> outer{{0, 0}};
+  const int shore = count(0, 2);
+  for (int k = 0; k < shore; ++k)
+    outer.push_back({1.5 + 4.5 * k + uniform(0, 1.5), 0}); // wedges 0.6 apart at least
+  for (const point q : {point{10, 0}, point{10, 10}, point{0, 10}})
+    outer.push_back(q);
+  g.add_loop(outer);
+  for (int k = 0; k < shore; ++k) {
+    const double a1 = uniform(5, 80);
+    add_wedge_hole(g, static_cast<index_t>(k + 1), a1, a1 + uniform(10, 170 - a1),
+                   uniform(0.6, 1.2));
+  }
+  const int inside = count(1, 3);
+  for (int k = 0; k < inside; ++k) {
+    const index_t p = g.add_vertex({1.8 + 3.2 * k, uniform(4, 8)});
+    const int m = count(2, 4);
+    std::vector<double> wedge(m), gap(m);
+    double wedges = 0, weights = 0;
+    for (int j = 0; j < m; ++j) {
+      wedges += wedge[j] = uniform(3, 80);
+      weights += gap[j] = uniform(0.2, 1);
+    }
+    double at = uniform(0, 360);
+    const double r = uniform(0.5, 1.4);
+    for (int j = 0; j < m; ++j) {
+      add_wedge_hole(g, p, at, at + wedge[j], r);
+      at += wedge[j] + (360 - wedges) * gap[j] / weights;
+    }
+  }
   g.rule = domain_rule::triangle;
   return g;
 }

@@ -10,9 +10,11 @@
 #include "test_files.hpp"
 #include "test_support.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <fstream>
 #include <map>
+#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -164,14 +166,29 @@ TEST(PddMeshRegionAttributes, GeneralDomainDecoupledFromItsFaces) {
   const nlohmann::json j2 = nlohmann::json::parse(in2);
   EXPECT_GE(j2["subdomains"], 8);
   EXPECT_EQ(j2["interface_splits"], 0);
-  // rings touching at a vertex: N > 1 is refused naming the vertex, exit 1, no file
+  // rings touching at a vertex: decoupled, verified
   const auto pinched = pdd::test::temp_path("pinched.poly");
   pdd::write_poly(pinched, pdd::test::pinched_rings());
-  const auto no = run_mesh(pinched.string() + " --max-area 0.05 --subdomains 4 -o " +
-                           pdd::test::temp_path("pinched_out.node").string());
+  const auto rings =
+      run_mesh(pinched.string() + " --max-area 0.05 --subdomains 4 --verify -o " +
+               pdd::test::temp_path("pinched_out.node").string() + " --stats " + stats.string());
+  ASSERT_EQ(rings.code, 0) << rings.output;
+  EXPECT_NE(rings.output.find("verification passed"), std::string::npos) << rings.output;
+  std::ifstream in3(stats);
+  EXPECT_EQ(nlohmann::json::parse(in3)["subdomains"], 4);
+  // a chord at 30 deg to the bottom side: N > 1 is refused naming the vertex, exit 1, no file
+  pdd::pslg chord;
+  chord.add_loop(std::vector<pdd::point>{
+      {0, 0}, {4, 0}, {4, 4 * std::tan(std::numbers::pi / 6)}, {4, 4}, {0, 4}});
+  chord.add_segment(0, 2);
+  const auto corner = pdd::test::temp_path("corner.poly");
+  pdd::write_poly(corner, chord);
+  const auto no = run_mesh(corner.string() + " --max-area 0.05 --subdomains 4 -o " +
+                           pdd::test::temp_path("corner_out.node").string());
   EXPECT_EQ(no.code, 1) << no.output;
-  EXPECT_NE(no.output.find("visited twice"), std::string::npos) << no.output;
-  EXPECT_FALSE(fs::exists(pdd::test::temp_path("pinched_out.node")));
+  EXPECT_NE(no.output.find("at vertex 0 (0, 0)"), std::string::npos) << no.output;
+  EXPECT_NE(no.output.find("below 60 deg"), std::string::npos) << no.output;
+  EXPECT_FALSE(fs::exists(pdd::test::temp_path("corner_out.node")));
 }
 
 } // namespace region_attributes_test

@@ -51,7 +51,7 @@ namespace pdd {
 /// within the split's boundary spacing of them (madd/detail/features.hpp).
 /// \pre g is valid (validate()).
 /// \throws geometry_error as find_loops for bad input; decomposition_error for bad options, for
-/// a general PSLG with a face that touches itself, a corner < 60 deg on an internal constraint
+/// a general PSLG with a corner < 60 deg on an internal constraint
 /// or a segment inside a face at such an angle (pdd::face_decoupling; the message names it), or
 /// when the domain cannot be split as asked (a subdomain too thin or with too few junction
 /// triangles after max_refinement_levels: the message names the subdomain and the reason).

@@ -16,10 +16,10 @@ namespace pdd {
 struct face_decoupling_report {
   std::size_t faces = 0; ///< faces of the domain (each is at least one subdomain); 0 if refused
   /// Empty when MADD can start from the faces (dangling segments and isolated vertices are
-  /// kept inside subdomains); else the first reason it cannot (a face that touches itself at a
-  /// vertex, a corner < 60 deg on a segment between two faces, a segment inside a face that
-  /// starts at the apex of a corner < 60 deg or at < 60 deg to a segment between two faces),
-  /// naming the vertex ids.
+  /// kept inside subdomains, faces that touch themselves at pinch vertices are weakly simple);
+  /// else the first reason it cannot (a corner < 60 deg on a segment between two faces, a
+  /// segment inside a face that starts at the apex of a corner < 60 deg or at < 60 deg to a
+  /// segment between two faces), naming the vertex ids.
   std::string refusal;
 };
 

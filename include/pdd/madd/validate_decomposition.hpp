@@ -17,7 +17,8 @@
 namespace pdd {
 
 /// Checks a decomposition of the domain of g: every subdomain is a polygon with holes (outer
-/// loop counter-clockwise, holes clockwise and inside it, no vertex twice, no two edges
+/// loop counter-clockwise, holes clockwise and inside it, no vertex twice except where the
+/// domain's loops touch (a pinch vertex: a subdomain visits it once per sector), no two edges
 /// crossing or overlapping); its area field matches its loops; the areas add up to the
 /// domain's area (relative tolerance); every external edge lies on the input segment it names
 /// (same marker) exactly once and the external edges cover every input segment; every
@@ -35,8 +36,9 @@ inline decomposition_report validate_decomposition(const decomposition& d, const
   if (d.vertex_markers.size() != d.vertices.size())
     pr.push_back("vertex_markers has the wrong size");
   detail::decomposition_edges edges;
+  const std::vector<point> pinches = detail::pinch_candidates(g);
   for (std::size_t s = 0; s < d.subdomains.size() && pr.size() < o.max_problems; ++s) {
-    if (!detail::check_subdomain_structure(d, s, pr)) continue;
+    if (!detail::check_subdomain_structure(d, s, pinches, pr)) continue;
     detail::check_subdomain_loops(d, s, pr);
     detail::check_subdomain_simple(d, s, pr);
     rep.area_sum += detail::check_subdomain_edges(d, s, o, rep, edges);

@@ -1,7 +1,11 @@
 /// \file face_regions.hpp
 /// Implementation detail of MADD on a general PSLG (one not of closed loops, issue 13): its
 /// faces (pdd::domain_faces, by the PSLG's rule) as the first regions, each a polygon with
-/// holes whose loops are walked along the segments around it. A segment between two faces of
+/// holes whose loops are walked along the segments around it. Where a face touches itself (a
+/// pinch vertex: an island touching the shore, two holes touching), its loops are weakly
+/// simple: they visit that vertex once per sector of the face there, and MADD keeps the visits
+/// apart (madd/detail/triangulation.hpp), so each subdomain meets the vertex in its own
+/// sectors and each sector is shielded on its own. A segment between two faces of
 /// the domain (an internal constraint) is then an edge of both regions: MADD keeps their
 /// vertices conforming (apply_edge_splits) and assemble_decomposition makes it an interface,
 /// so the decoupling path splits it like a separator. A segment with one face on both sides
@@ -10,8 +14,10 @@
 /// (madd/detail/features.hpp), so each ends up inside one subdomain and its kernel meshes it.
 #pragma once
 
+#include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
+#include <pdd/errors.hpp>
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/madd/detail/region.hpp>
 
@@ -27,8 +33,8 @@ namespace pdd::detail {
 /// The faces of a general PSLG as MADD regions, or why it cannot be decoupled.
 struct face_region_set {
   std::vector<madd_region> regions; ///< by face id; empty when `refusal` is set
-  /// Empty when every face is a polygon with holes whose corners on internal constraints are
-  /// >= 60 deg; else what stops decoupling (names the segment or vertex ids).
+  /// Empty when every corner of a face on an internal constraint is >= 60 deg and no segment
+  /// inside a face starts at a small corner; else what stops decoupling (names the vertex).
   std::string refusal;
 };
 
@@ -121,36 +127,66 @@ inline void add_isolated_vertices(const pslg& g, const std::vector<domain_triang
     }
 }
 
+/// Where ray v -> p lies when turning counter-clockwise from ray v -> ref: 0 in (0, 180) deg,
+/// 1 at 180 deg, 2 in (180, 360) deg (exact; p is not on ray v -> ref).
+inline int turn_class(point v, point ref, point p) {
+  const auto o = CGAL::orientation(epick::Point_2(v.x, v.y), epick::Point_2(ref.x, ref.y),
+                                   epick::Point_2(p.x, p.y));
+  return o == CGAL::LEFT_TURN ? 0 : o == CGAL::COLLINEAR ? 1 : 2;
+}
+
+/// True when ray v -> p comes before ray v -> q turning counter-clockwise from ray v -> ref
+/// (exact predicates; neither ray is v -> ref, and they differ).
+inline bool turns_before(point v, point ref, point p, point q) {
+  const int cp = turn_class(v, ref, p), cq = turn_class(v, ref, q);
+  if (cp != cq) return cp < cq;
+  return CGAL::orientation(epick::Point_2(v.x, v.y), epick::Point_2(p.x, p.y),
+                           epick::Point_2(q.x, q.y)) == CGAL::LEFT_TURN;
+}
+
+/// The boundary half-edge of the face that follows u -> v (candidates: edges[lo, hi), those
+/// leaving v): the first one clockwise from v -> u, so that the face stays on the left. At a
+/// pinch vertex (the face touches itself there) this takes the sector that u -> v bounds.
+inline std::size_t next_boundary_edge(const pslg& g, const std::vector<face_half_edge>& edges,
+                                      std::size_t lo, std::size_t hi, index_t u) {
+  std::size_t best = lo;
+  const point pv = g.vertices[edges[lo].a], pu = g.vertices[u];
+  for (std::size_t i = lo + 1; i < hi; ++i)
+    if (turns_before(pv, pu, g.vertices[edges[best].b], g.vertices[edges[i].b])) best = i;
+  return best;
+}
+
 /// Walks the boundary half-edges of one face (edges[first, last), sorted by tail) into
-/// loops. False (with `refusal`) when a vertex starts two of them (the face touches itself
-/// there, a pinch vertex).
-inline bool walk_face_loops(const pslg& g, const std::vector<face_half_edge>& edges,
+/// loops, keeping the face on the left. Where the face touches itself (a pinch vertex: loops
+/// of the PSLG that meet at one vertex) a loop visits that vertex once per sector of the face
+/// there, so the loops are weakly simple: MADD and the subdomains keep each visit apart.
+inline void walk_face_loops(const pslg& g, const std::vector<face_half_edge>& edges,
                             std::size_t first, std::size_t last,
-                            std::vector<std::vector<index_t>>& loops, std::string& refusal) {
-  for (std::size_t i = first; i + 1 < last; ++i)
-    if (edges[i].a == edges[i + 1].a) {
-      refusal = vertex_name(g, edges[i].a) +
-                " is visited twice by the boundary of one face (loops that touch there): the "
-                "decoupled pipeline needs every face to be a polygon with holes";
-      return false;
-    }
+                            std::vector<std::vector<index_t>>& loops) {
   std::vector<char> used(last - first, 0);
-  auto next_of = [&](index_t v) {
-    const auto it = std::lower_bound(edges.begin() + static_cast<std::ptrdiff_t>(first),
-                                     edges.begin() + static_cast<std::ptrdiff_t>(last), v,
-                                     [](const face_half_edge& e, index_t x) { return e.a < x; });
-    return static_cast<std::size_t>(it - edges.begin()) - first;
+  const auto begin = edges.begin() + static_cast<std::ptrdiff_t>(first);
+  const auto end = edges.begin() + static_cast<std::ptrdiff_t>(last);
+  auto next_of = [&](std::size_t k) {
+    const index_t v = edges[first + k].b;
+    const auto by_tail = [](const face_half_edge& e, index_t x) { return e.a < x; };
+    const auto lo = std::lower_bound(begin, end, v, by_tail);
+    auto hi = lo;
+    while (hi != end && hi->a == v)
+      ++hi;
+    PDD_ASSERT(lo != hi);
+    return next_boundary_edge(g, edges, static_cast<std::size_t>(lo - edges.begin()),
+                              static_cast<std::size_t>(hi - edges.begin()), edges[first + k].a) -
+           first;
   };
   for (std::size_t s = 0; s < used.size(); ++s) {
     if (used[s]) continue;
     std::vector<index_t> loop;
-    for (std::size_t k = s; !used[k]; k = next_of(edges[first + k].b)) {
+    for (std::size_t k = s; !used[k]; k = next_of(k)) {
       used[k] = 1;
       loop.push_back(edges[first + k].a);
     }
     loops.push_back(std::move(loop));
   }
-  return true;
 }
 
 /// True when the boundary edge a -> b of a face is an internal constraint: its twin b -> a
@@ -247,7 +283,7 @@ inline madd_region face_region(const pslg& g, const std::vector<std::vector<inde
 
 /// The faces of the domain of g (pdd::domain_faces by g.rule) as MADD regions, in face order,
 /// with their features (dangling segments, segments with the face on both sides, isolated
-/// vertices), or the first reason (a pinch vertex, a constraint corner below 60 deg, a feature
+/// vertices), or the first reason (a constraint corner below 60 deg, a feature
 /// at a corner below 60 deg or at a small angle to an internal constraint) why the
 /// decoupled pipeline cannot take g. Each region's loops run along PSLG segments, tagged
 /// external with the segment id and marker.
@@ -267,7 +303,7 @@ inline face_region_set face_regions(const pslg& g, const domain_faces& faces) {
     while (last < edges.size() && edges[last].face == edges[first].face)
       ++last;
     std::vector<std::vector<index_t>> loops;
-    if (!walk_face_loops(g, edges, first, last, loops, out.refusal)) break;
+    walk_face_loops(g, edges, first, last, loops);
     for (const auto& loop : loops)
       for (std::size_t i = 0; i < loop.size() && out.refusal.empty(); ++i)
         out.refusal = small_constraint_corner(g, loop, i, by_edge);

@@ -153,21 +153,58 @@ inline void build_z(const madd_region& r, double h, std::vector<madd_zvertex>& z
 }
 
 /// The constrained Delaunay triangulation of Z (every piece a constraint); handle[i] is the
-/// vertex of Z vertex i.
+/// vertex of Z vertex i. Z vertices at one point (a pinch vertex, visited once per sector of
+/// the region there) share one vertex, whose info is one of them: twin[i] is the next Z vertex
+/// at z[i]'s point, cyclically (i when it is alone).
 inline void insert_z(const std::vector<madd_zvertex>& z, madd_cdt& cdt,
-                     std::vector<madd_cdt::Vertex_handle>& handle) {
+                     std::vector<madd_cdt::Vertex_handle>& handle,
+                     std::vector<std::uint32_t>& twin) {
   std::vector<std::pair<epick::Point_2, std::uint32_t>> pts;
   pts.reserve(z.size());
   for (std::uint32_t i = 0; i < z.size(); ++i)
     pts.emplace_back(epick::Point_2(z[i].p.x, z[i].p.y), i);
   cdt.insert(pts.begin(), pts.end());
   handle.assign(z.size(), madd_cdt::Vertex_handle());
+  twin.resize(z.size());
+  for (std::uint32_t i = 0; i < z.size(); ++i)
+    twin[i] = i;
   for (auto v : cdt.finite_vertex_handles())
     handle[v->info()] = v;
   for (std::uint32_t i = 0; i < z.size(); ++i)
-    PDD_ASSERT(handle[i] != madd_cdt::Vertex_handle());
+    if (handle[i] == madd_cdt::Vertex_handle()) { // a second visit: the vertex is there
+      const auto before = cdt.number_of_vertices();
+      handle[i] = cdt.insert(pts[i].first);
+      PDD_ASSERT(cdt.number_of_vertices() == before);
+      const std::uint32_t r = handle[i]->info();
+      twin[i] = twin[r];
+      twin[r] = i;
+    }
   for (std::uint32_t i = 0; i < z.size(); ++i)
     cdt.insert_constraint(handle[i], handle[z[i].next]);
+}
+
+/// The Z vertex at vertex k of face f that belongs to the sector of the region containing f
+/// (twin: see insert_z): turning clockwise around it from f to the first piece of Z, that
+/// piece is the one leaving the visit (the region lies counter-clockwise from it).
+inline std::uint32_t visit_of_face(const std::vector<madd_zvertex>& z,
+                                   const std::vector<madd_cdt::Vertex_handle>& handle,
+                                   const std::vector<std::uint32_t>& twin, madd_cdt::Face_handle f,
+                                   int k) {
+  const auto vh = f->vertex(k);
+  const std::uint32_t first = vh->info();
+  if (twin[first] == first) return first;
+  int i = k;
+  while (!f->is_constrained(madd_cdt::cw(i))) {
+    f = f->neighbor(madd_cdt::cw(i));
+    i = f->index(vh);
+  }
+  const auto leaving = f->vertex(madd_cdt::ccw(i));
+  std::uint32_t o = first;
+  while (handle[z[o].next] != leaving) {
+    o = twin[o];
+    PDD_ASSERT(o != first);
+  }
+  return o;
 }
 
 /// Whether the piece (f, fi) has a vertex of the triangulation strictly inside its diametral
@@ -205,19 +242,30 @@ inline madd_zvertex piece_midpoint(const madd_region& r, const madd_triangulatio
   return m;
 }
 
-/// The pieces of Z that are constrained edges around vertex vh, queued for a check.
+/// The pieces of Z that are constrained edges around vertex vh, queued for a check (twin:
+/// see insert_z).
 inline void queue_pieces_around(const madd_cdt& cdt, const std::vector<madd_zvertex>& z,
-                                madd_cdt::Vertex_handle vh, std::deque<std::uint32_t>& queue) {
+                                const std::vector<std::uint32_t>& twin, madd_cdt::Vertex_handle vh,
+                                std::deque<std::uint32_t>& queue) {
+  const auto queue_piece = [&](std::uint32_t x, std::uint32_t y) {
+    std::uint32_t xo = x;
+    do {
+      std::uint32_t yo = y;
+      do {
+        if (z[xo].next == yo) return queue.push_back(xo);
+        yo = twin[yo];
+      } while (yo != y);
+      xo = twin[xo];
+    } while (xo != x);
+  };
   auto fc = cdt.incident_faces(vh), done = fc;
   do {
     const int i = fc->index(vh);
     if (fc->is_constrained(i)) {
       const std::uint32_t x = fc->vertex(madd_cdt::ccw(i))->info();
       const std::uint32_t y = fc->vertex(madd_cdt::cw(i))->info();
-      if (z[x].next == y)
-        queue.push_back(x);
-      else if (z[y].next == x)
-        queue.push_back(y);
+      queue_piece(x, y);
+      queue_piece(y, x);
     }
   } while (++fc != done);
 }
@@ -225,7 +273,8 @@ inline void queue_pieces_around(const madd_cdt& cdt, const std::vector<madd_zver
 /// Condition (ii) of 3.2: bisects encroached pieces until none is, or a piece has been
 /// bisected max_depth times (small input angles cascade), or cannot be (a few ulps long).
 inline void split_encroached_pieces(const madd_region& r, madd_triangulation& tr, madd_cdt& cdt,
-                                    std::vector<madd_cdt::Vertex_handle>& handle, int max_depth) {
+                                    std::vector<madd_cdt::Vertex_handle>& handle,
+                                    std::vector<std::uint32_t>& twin, int max_depth) {
   auto& z = tr.z;
   std::deque<std::uint32_t> queue;
   for (std::uint32_t i = 0; i < z.size(); ++i)
@@ -251,18 +300,22 @@ inline void split_encroached_pieces(const madd_region& r, madd_triangulation& tr
     PDD_ASSERT(cdt.number_of_vertices() == before + 1); // a new vertex, not an old one
     vh->info() = k;
     handle.push_back(vh);
+    twin.push_back(k);
     cdt.insert_constraint(handle[u], vh);
     cdt.insert_constraint(vh, handle[w]);
     ++tr.encroachment_splits;
     queue.push_back(u);
     queue.push_back(k);
-    queue_pieces_around(cdt, z, vh, queue);
+    queue_pieces_around(cdt, z, twin, vh, queue);
   }
 }
 
 /// The faces inside the region (odd nesting level, pdd::flood_levels) as tr.faces, with
-/// their neighbours across non-boundary edges.
-inline void collect_region_faces(madd_cdt& cdt, madd_triangulation& tr) {
+/// their neighbours across non-boundary edges; a vertex visited twice is the visit of the
+/// face's sector (visit_of_face).
+inline void collect_region_faces(madd_cdt& cdt, madd_triangulation& tr,
+                                 const std::vector<madd_cdt::Vertex_handle>& handle,
+                                 const std::vector<std::uint32_t>& twin) {
   for (auto f : cdt.all_face_handles())
     f->info() = -1;
   flood_levels(cdt, [](madd_cdt::Face_handle f) -> int& { return f->info(); });
@@ -278,7 +331,7 @@ inline void collect_region_faces(madd_cdt& cdt, madd_triangulation& tr) {
     const auto f = inside[i];
     madd_face& mf = tr.faces[i];
     for (int k = 0; k < 3; ++k) {
-      mf.v[k] = f->vertex(k)->info();
+      mf.v[k] = visit_of_face(tr.z, handle, twin, f, k);
       mf.nb[k] = f->is_constrained(k) ? -1 : f->neighbor(k)->info();
       PDD_ASSERT(f->is_constrained(k) || mf.nb[k] >= 0);
     }
@@ -289,7 +342,8 @@ inline void collect_region_faces(madd_cdt& cdt, madd_triangulation& tr) {
 
 /// Builds Z for a region (target piece length h > 0) and its constrained Delaunay
 /// triangulation, bisecting encroached pieces at most max_encroachment_depth times each.
-/// \pre r is a valid region (simple loops, holes inside the outer loop, no shared vertices).
+/// \pre r is a valid region: weakly simple loops (a loop may visit a pinch vertex once per
+/// sector of the region there, and loops may touch there), holes inside the outer loop.
 /// Complexity O(n log n) expected, n = |Z|. Thread-safe (no shared state).
 inline madd_triangulation triangulate_region(const madd_region& r, double h,
                                              int max_encroachment_depth) {
@@ -297,9 +351,10 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
   build_z(r, h, tr.z);
   madd_cdt cdt;
   std::vector<madd_cdt::Vertex_handle> handle;
-  insert_z(tr.z, cdt, handle);
-  split_encroached_pieces(r, tr, cdt, handle, max_encroachment_depth);
-  collect_region_faces(cdt, tr);
+  std::vector<std::uint32_t> twin;
+  insert_z(tr.z, cdt, handle, twin);
+  split_encroached_pieces(r, tr, cdt, handle, twin, max_encroachment_depth);
+  collect_region_faces(cdt, tr, handle, twin);
   return tr;
 }
 

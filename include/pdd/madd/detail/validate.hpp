@@ -74,7 +74,46 @@ inline void check_subdomain_simple(const decomposition& d, std::size_t s,
                        " pairs of boundary edges intersect, e.g. " + first);
 }
 
-/// Orientation and nesting of one subdomain's loops.
+/// The points of g's vertices on four or more segments, sorted: the only points where a face of
+/// g's domain can touch itself (a pinch vertex), so the only ones a subdomain may visit twice.
+inline std::vector<point> pinch_candidates(const pslg& g) {
+  std::vector<int> degree(g.vertices.size(), 0);
+  for (const segment& sg : g.segments)
+    ++degree[sg.a], ++degree[sg.b];
+  std::vector<point> out;
+  for (index_t v = 0; v < g.vertices.size(); ++v)
+    if (degree[v] >= 4) out.push_back(g.vertices[v]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+/// Whether loop `l` (its points) runs counter-clockwise: CGAL's exact orientation at its
+/// lowest-leftmost vertex; a loop that visits a pinch vertex twice (weakly simple, where that
+/// vertex may be the extreme one) by the sign of its area.
+inline bool loop_counter_clockwise(const std::vector<epick::Point_2>& l) {
+  std::vector<epick::Point_2> sorted = l;
+  std::sort(sorted.begin(), sorted.end());
+  if (std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
+    return CGAL::orientation_2(l.begin(), l.end(), epick()) == CGAL::COUNTERCLOCKWISE;
+  return polygon_signed_area(l.size(), [&](std::size_t i) {
+           return point{l[i].x(), l[i].y()};
+         }) > 0.0;
+}
+
+/// A vertex of hole loop h of sd on no other loop of sd (no_index when every one is: a hole
+/// that touches the others at all its vertices, which the nesting check then skips).
+inline index_t own_vertex(const subdomain& sd, std::size_t h) {
+  for (const index_t v : sd.loops[h]) {
+    bool shared = false;
+    for (std::size_t k = 0; k < sd.loops.size() && !shared; ++k)
+      shared = k != h && std::find(sd.loops[k].begin(), sd.loops[k].end(), v) != sd.loops[k].end();
+    if (!shared) return v;
+  }
+  return no_index;
+}
+
+/// Orientation and nesting of one subdomain's loops (each hole tested at a vertex of its own:
+/// loops may touch at pinch vertices).
 inline void check_subdomain_loops(const decomposition& d, std::size_t s,
                                   std::vector<std::string>& problems) {
   const subdomain& sd = d.subdomains[s];
@@ -86,15 +125,15 @@ inline void check_subdomain_loops(const decomposition& d, std::size_t s,
       p.emplace_back(d.vertices[v].x, d.vertices[v].y);
     polys.push_back(std::move(p));
   }
-  for (std::size_t l = 0; l < polys.size(); ++l) {
-    const auto o = CGAL::orientation_2(polys[l].begin(), polys[l].end(), epick());
-    if (o != (l == 0 ? CGAL::COUNTERCLOCKWISE : CGAL::CLOCKWISE))
+  for (std::size_t l = 0; l < polys.size(); ++l)
+    if (loop_counter_clockwise(polys[l]) != (l == 0))
       problems.push_back(
           name + ": loop " + std::to_string(l) +
           (l == 0 ? " (outer) is not counter-clockwise" : " (hole) is not clockwise"));
-  }
   for (std::size_t h = 1; h < polys.size(); ++h) {
-    const auto& q = polys[h][0];
+    const index_t own = own_vertex(sd, h);
+    if (own == no_index) continue;
+    const epick::Point_2 q(d.vertices[own].x, d.vertices[own].y);
     if (CGAL::bounded_side_2(polys[0].begin(), polys[0].end(), q, epick()) != CGAL::ON_BOUNDED_SIDE)
       problems.push_back(name + ": hole loop " + std::to_string(h) +
                          " is not inside the outer loop");
@@ -106,7 +145,6 @@ inline void check_subdomain_loops(const decomposition& d, std::size_t s,
   }
 }
 
-/// One occurrence of an edge in a subdomain loop.
 struct edge_occurrence {
   index_t s, from, to;
   edge_tag tag;
@@ -116,7 +154,9 @@ using decomposition_edges = std::map<std::pair<index_t, index_t>, std::vector<ed
 
 /// False (with the problem) when subdomain s has no loops, tags that do not match them, a loop
 /// of fewer than 3 vertices or a vertex id out of range: nothing else can be checked then.
+/// A vertex visited twice is a problem unless it lies at one of `pinches` (pinch_candidates).
 inline bool check_subdomain_structure(const decomposition& d, std::size_t s,
+                                      const std::vector<point>& pinches,
                                       std::vector<std::string>& pr) {
   const subdomain& sd = d.subdomains[s];
   const std::string name = "subdomain " + std::to_string(s);
@@ -139,9 +179,13 @@ inline bool check_subdomain_structure(const decomposition& d, std::size_t s,
     return false;
   }
   std::sort(all.begin(), all.end());
-  if (std::adjacent_find(all.begin(), all.end()) != all.end())
-    pr.push_back(name + ": vertex " + std::to_string(*std::adjacent_find(all.begin(), all.end())) +
-                 " occurs twice (the subdomain touches itself)");
+  for (auto it = std::adjacent_find(all.begin(), all.end()); it != all.end();
+       it = std::adjacent_find(it + 1, all.end()))
+    if (!std::binary_search(pinches.begin(), pinches.end(), d.vertices[*it])) {
+      pr.push_back(name + ": vertex " + std::to_string(*it) +
+                   " occurs twice (the subdomain touches itself where the domain does not)");
+      break;
+    }
   return true;
 }
 

@@ -34,8 +34,8 @@ struct general_domain_plan {
 /// A domain that is not one of closed loops (read by Triangle's rule): its faces, which MADD
 /// starts from (`start`: null when one subdomain is asked for, the faces are then not needed).
 /// \throws pdd::decomposition_error for options.subdomains > 1 on a domain that cannot be
-/// decoupled (pdd::madd_start::refusal: a face touching itself, a constraint corner < 60 deg,
-/// a segment inside a face at such a corner; the message names it).
+/// decoupled (pdd::madd_start::refusal: a constraint corner < 60 deg, a segment inside a face
+/// at such a corner; the message names it).
 inline general_domain_plan plan_general_domain(const madd_start* start,
                                                const generate_options& options) {
   general_domain_plan p;
