@@ -3,9 +3,9 @@
 // reach the interesting paths (small input angles that get shielded, holes, thin parts, a
 // regions section), and small general domains (issue 13, by Triangle's rule, meshed whole or
 // decoupled from their faces: an internal constraint, a dangling segment and isolated vertices,
-// an internal boundary, loops touching at pinch vertices, a T-junction grid, a fan of dangling
-// segments at 15 deg, random arrangements and maps, tests/common/general_domains.hpp; one with a
-// 0.2 deg angle the kernel refuses).
+// an internal boundary, loops touching at pinch vertices (small sectors too), a T-junction grid,
+// a fan of dangling segments at 15 deg, random arrangements and maps,
+// tests/common/general_domains.hpp; one with a 0.2 deg angle the kernel refuses).
 // The bundled examples/data files are the other seeds.
 //
 //   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
@@ -115,6 +115,8 @@ std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
           {"general-dangling-fan", dangling_fan()},
           {"general-layered", pdd::test::layered_domain(0.5)},
           {"general-pinched", pdd::test::pinched_rings()},
+          {"general-pinched-sectors", pdd::test::pinched_sectors()},
+          {"general-pinched-random", pdd::test::random_pinched(3)},
           {"general-t-junctions", pdd::test::t_junction_grid()},
           {"general-combined", pdd::test::combined_domain(0.5)},
           {"general-random-1", pdd::test::random_arrangement(1)},

@@ -24,6 +24,7 @@
 #include <pdd/mesh/quality_check.hpp>
 #include <pdd/mesh/region_attributes.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/regional.hpp>
 #include <pdd/triangle/triangulate.hpp>
 
@@ -343,6 +344,14 @@ TEST(GeneralPslg, FacesThatTouchThemselvesAreDecoupled) {
       EXPECT_EQ(one.statistics.subdomains, n);
       EXPECT_EQ(one.statistics.interface_splits, 0u);
       EXPECT_EQ(one.statistics.shielded_triangles, small_sectors);
+      // found in the mesh: only the triangles in the small sectors of a pinch vertex
+      const pdd::shielding_statistics st = pdd::compute_shielding_statistics(one.mesh, c.domain);
+      EXPECT_EQ(st.shielded_triangles, small_sectors);
+      EXPECT_EQ(pdd::find_shielded_triangles(one.mesh, c.domain) ==
+                    std::vector<char>(one.mesh.triangles.size(), 0),
+                small_sectors == 0);
+      EXPECT_GE(st.min_angle_unshielded_deg, 20.69);
+      EXPECT_LT(st.max_shield_angle_error_deg, 1e-6); // each shield has its own sector's angle
       expect_verified(one.mesh, c.domain, c.max_area, at);
       expect_segments_kept_once(one.mesh, c.domain, at);
       expect_close_to_triangle(one.mesh.triangles.size(), c.triangle_count, at);

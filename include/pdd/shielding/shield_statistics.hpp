@@ -14,6 +14,7 @@
 #include <pdd/shielding/detail/shielding_accumulator.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -23,7 +24,8 @@
 namespace pdd {
 
 namespace detail {
-/// The apexes of the domain's angles < 60 deg (domain side) with their angles in degrees.
+/// The apexes of the domain's angles < 60 deg (domain side) with their one sector each
+/// (closed loops: every vertex is on two segments).
 inline small_angle_apex_map small_angle_apexes(const pslg& domain) {
   small_angle_apex_map apex;
   const loop_structure ls = find_loops(domain);
@@ -33,9 +35,9 @@ inline small_angle_apex_map small_angle_apexes(const pslg& domain) {
       const point& prev = domain.vertices[l.vertices[(i + n - 1) % n]];
       const point& v = domain.vertices[l.vertices[i]];
       const point& next = domain.vertices[l.vertices[(i + 1) % n]];
-      const double a =
-          l.domain_on_left() ? ccw_angle_deg(v, next, prev) : ccw_angle_deg(v, prev, next);
-      if (a < shield_threshold_deg) apex[{v.x, v.y}] = a;
+      const point from = l.domain_on_left() ? next : prev, to = l.domain_on_left() ? prev : next;
+      const double a = ccw_angle_deg(v, from, to);
+      if (a < shield_threshold_deg) apex[{v.x, v.y}] = {{from, to, a}};
     }
   }
   return apex;
@@ -62,30 +64,43 @@ struct small_input_angles {
 inline small_input_angles find_small_input_angles(const pslg& domain) {
   if (domain.rule == domain_rule::triangle && !has_closed_loops(domain)) {
     small_input_angles out;
-    for (const domain_angle& a : domain_angles(domain)) {
-      out.min_input_angle_deg = std::min(out.min_input_angle_deg, a.angle_deg);
-      if (a.angle_deg >= detail::shield_threshold_deg) continue;
-      const point& v = domain.vertices[a.vertex];
-      double& at = out.apexes.try_emplace({v.x, v.y}, a.angle_deg).first->second;
-      at = std::min(at, a.angle_deg);
+    const std::vector<domain_angle> angles = domain_angles(domain); // by vertex
+    for (std::size_t i = 0, j = 0; i < angles.size(); i = j) {
+      bool small = false;
+      for (j = i; j < angles.size() && angles[j].vertex == angles[i].vertex; ++j) {
+        out.min_input_angle_deg = std::min(out.min_input_angle_deg, angles[j].angle_deg);
+        small = small || angles[j].angle_deg < detail::shield_threshold_deg;
+      }
+      if (!small) continue;
+      const point& v = domain.vertices[angles[i].vertex];
+      auto& sectors = out.apexes[{v.x, v.y}];
+      for (std::size_t k = i; k < j; ++k)
+        sectors.push_back(
+            {domain.vertices[angles[k].from], domain.vertices[angles[k].to], angles[k].angle_deg});
     }
     return out;
   }
   return {detail::small_angle_apexes(domain), min_domain_angle_deg(domain)};
 }
 
-/// Per triangle of m: 1 when it is a shielded triangle, i.e. it has a vertex at the apex of an
-/// input angle < 60 deg (a shielded apex lies in exactly its shielded triangle; vertices are
-/// matched by coordinates). Use it as verify_options::quality_exempt.
+/// Per triangle of m: 1 when it is a shielded triangle, i.e. it has a corner in a sector
+/// < 60 deg of the domain at an apex (a shielded apex lies in exactly its shielded triangle;
+/// vertices are matched by coordinates; at a pinch vertex only the triangles in its small
+/// sectors count). Use it as verify_options::quality_exempt.
 /// Complexity O(T log s). Thread-safe.
 inline std::vector<char> find_shielded_triangles(const triangle_mesh& m,
                                                  const small_input_angles& angles) {
   const auto& apex = angles.apexes;
   std::vector<char> flag(m.triangles.size(), 0);
   if (apex.empty()) return flag;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t)
-    for (const index_t v : m.triangles[t])
-      if (apex.count({m.vertices[v].x, m.vertices[v].y})) flag[t] = 1;
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& tri = m.triangles[t];
+    const std::array<point, 3> p{m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]};
+    for (std::size_t i = 0; i < 3; ++i)
+      if (detail::shielding_accumulator::small_sector_angle(p, i, apex) <
+          detail::shield_threshold_deg)
+        flag[t] = 1;
+  }
   return flag;
 }
 

@@ -14,8 +14,8 @@
 /// (madd/detail/features.hpp), so each ends up inside one subdomain and its kernel meshes it.
 #pragma once
 
-#include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/ray_order.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/domain_faces.hpp>
@@ -127,23 +127,6 @@ inline void add_isolated_vertices(const pslg& g, const std::vector<domain_triang
     }
 }
 
-/// Where ray v -> p lies when turning counter-clockwise from ray v -> ref: 0 in (0, 180) deg,
-/// 1 at 180 deg, 2 in (180, 360) deg (exact; p is not on ray v -> ref).
-inline int turn_class(point v, point ref, point p) {
-  const auto o = CGAL::orientation(epick::Point_2(v.x, v.y), epick::Point_2(ref.x, ref.y),
-                                   epick::Point_2(p.x, p.y));
-  return o == CGAL::LEFT_TURN ? 0 : o == CGAL::COLLINEAR ? 1 : 2;
-}
-
-/// True when ray v -> p comes before ray v -> q turning counter-clockwise from ray v -> ref
-/// (exact predicates; neither ray is v -> ref, and they differ).
-inline bool turns_before(point v, point ref, point p, point q) {
-  const int cp = turn_class(v, ref, p), cq = turn_class(v, ref, q);
-  if (cp != cq) return cp < cq;
-  return CGAL::orientation(epick::Point_2(v.x, v.y), epick::Point_2(p.x, p.y),
-                           epick::Point_2(q.x, q.y)) == CGAL::LEFT_TURN;
-}
-
 /// The boundary half-edge of the face that follows u -> v (candidates: edges[lo, hi), those
 /// leaving v): the first one clockwise from v -> u, so that the face stays on the left. At a
 /// pinch vertex (the face touches itself there) this takes the sector that u -> v bounds.
@@ -152,7 +135,7 @@ inline std::size_t next_boundary_edge(const pslg& g, const std::vector<face_half
   std::size_t best = lo;
   const point pv = g.vertices[edges[lo].a], pu = g.vertices[u];
   for (std::size_t i = lo + 1; i < hi; ++i)
-    if (turns_before(pv, pu, g.vertices[edges[best].b], g.vertices[edges[i].b])) best = i;
+    if (ray_turns_before(pv, pu, g.vertices[edges[best].b], g.vertices[edges[i].b])) best = i;
   return best;
 }
 

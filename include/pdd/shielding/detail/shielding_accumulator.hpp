@@ -4,9 +4,12 @@
 /// not depend on how the range is split: the same bits for any thread count).
 #pragma once
 
+#include <pdd/core/kernel.hpp>
+#include <pdd/core/ray_order.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/parallel/deterministic_reduce.hpp>
+#include <pdd/shielding/detail/plan.hpp>
 
 #include <algorithm>
 #include <array>
@@ -15,11 +18,35 @@
 #include <limits>
 #include <map>
 #include <utility>
+#include <vector>
 
 namespace pdd::detail {
 
-/// The apexes of the input angles < 60 deg, keyed by their coordinates, with those angles.
-using small_angle_apex_map = std::map<std::pair<double, double>, double>;
+/// One sector of the domain at a vertex: counter-clockwise from the ray to `from` to the ray
+/// to `to` (the same ray: all around the vertex), and its angle in degrees.
+struct apex_sector {
+  point from, to;
+  double angle_deg = 360.0;
+};
+
+/// The vertices with an input angle < 60 deg, keyed by their coordinates, with the sectors of
+/// the domain there: one on closed loops; several at a pinch vertex or where constraints meet.
+using small_angle_apex_map = std::map<std::pair<double, double>, std::vector<apex_sector>>;
+
+/// The sector of `sectors` (at `apex`) that holds the triangle (apex, b, c), null when none
+/// does: the one whose counter-clockwise sweep from its `from` ray reaches the ray to the
+/// triangle's centroid before its `to` ray (exact predicates on the centroid, which lies
+/// inside the triangle's corner even where a split or shield point on a sector's segment is
+/// rounded off its ray).
+inline const apex_sector* sector_of_triangle(const std::vector<apex_sector>& sectors, point apex,
+                                             point b, point c) {
+  if (sectors.size() == 1) return &sectors.front();
+  const point centroid{(apex.x + b.x + c.x) / 3.0, (apex.y + b.y + c.y) / 3.0};
+  for (const apex_sector& s : sectors)
+    if (ray_turn_class(apex, s.from, s.to) == 0 || ray_turns_before(apex, s.from, centroid, s.to))
+      return &s;
+  return nullptr;
+}
 
 /// The shielding statistics of a range of triangles; join combines two ranges. The smallest
 /// angle and the largest radius-edge ratio (1 / (2 sin of the smallest angle)) of either kind
@@ -31,18 +58,28 @@ struct shielding_accumulator {
   double max_angle_error = 0.0;
 
   /// Adds the triangle (p[0], p[1], p[2]); `apex` as small_angle_apexes gives it. The triangle
-  /// is shielded when one of its vertices is an apex (the first such corner is its apex).
+  /// is shielded when one of its corners lies in a sector < 60 deg at an apex (the first such
+  /// corner is its apex).
   void add_triangle(const std::array<point, 3>& p, const small_angle_apex_map& apex) {
     const double sine2 = squared_sine_min_angle(p[0], p[1], p[2]);
     for (std::size_t i = 0; i < 3 && !apex.empty(); ++i)
-      if (const auto at = apex.find({p[i].x, p[i].y}); at != apex.end()) {
+      if (const double input = small_sector_angle(p, i, apex); input < shield_threshold_deg) {
         ++shielded;
         shielded_worst.offer(sine2, p[0], p[1], p[2]);
         const double angle = angle_at_deg(p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
-        max_angle_error = std::max(max_angle_error, std::abs(angle - at->second));
+        max_angle_error = std::max(max_angle_error, std::abs(angle - input));
         return;
       }
     unshielded_worst.offer(sine2, p[0], p[1], p[2]);
+  }
+
+  /// The angle of the sector that holds corner i of triangle p when p[i] is an apex, else 360.
+  static double small_sector_angle(const std::array<point, 3>& p, std::size_t i,
+                                   const small_angle_apex_map& apex) {
+    const auto at = apex.find({p[i].x, p[i].y});
+    if (at == apex.end()) return 360.0;
+    const apex_sector* s = sector_of_triangle(at->second, p[i], p[(i + 1) % 3], p[(i + 2) % 3]);
+    return s ? s->angle_deg : 360.0;
   }
 
   void join(const shielding_accumulator& o) {
