@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# A lake whose islands touch the shore and each other at single vertices (pinch vertices, issue
+# 13): decoupled from its one face since 08cdcd5, meshed whole before. Runs pdd-mesh automatic
+# (2 threads), pdd-mesh with one subdomain (what such a domain got before: the kernel on the
+# whole domain) and, when given, Triangle 1.6 on the same .poly, alternately, twice.
+# Usage: benchmarks/run_pinched.sh BUILD_DIR [MAX_AREA] [TRIANGLE_EXE]
+set -euo pipefail
+build=${1:?build dir}
+area=${2:-6e-5}
+triangle=${3:-}
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+python3 - "$dir/lake.poly" <<'PY'
+import math, random, sys
+rng = random.Random(5)
+n = 400
+pts = []
+for i in range(n):  # a wavy shore
+    t = 2 * math.pi * i / n
+    r = 10 * (1 + 0.08 * math.sin(7 * t) + 0.03 * math.sin(23 * t) + 0.01 * rng.uniform(-1, 1))
+    pts.append((r * math.cos(t), r * math.sin(t)))
+segs = [(i, (i + 1) % n) for i in range(n)]
+holes = []
+def orient(a, b, c):
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+def crosses(p, q, r, s):
+    if p in (r, s) or q in (r, s):
+        return False
+    return orient(p, q, r) * orient(p, q, s) < 0 and orient(r, s, p) * orient(r, s, q) < 0
+def island(apex, direction, size, k):  # a fan-shaped island touching `apex`; dropped if it crosses
+    n0, s0 = len(pts), len(segs)
+    c = pts[apex]
+    poly = [apex]
+    for j in range(1, k):
+        a = direction - 0.6 + 1.2 * j / k + rng.uniform(-0.1, 0.1)
+        rr = size * (0.6 + 0.4 * rng.random()) * math.sin(math.pi * j / k)
+        pts.append((c[0] + 2 * rr * math.cos(a), c[1] + 2 * rr * math.sin(a)))
+        poly.append(len(pts) - 1)
+    segs.extend((poly[j], poly[(j + 1) % len(poly)]) for j in range(len(poly)))
+    if any(crosses(pts[a], pts[b], pts[x], pts[y]) for a, b in segs[s0:] for x, y in segs[:s0]):
+        del pts[n0:], segs[s0:]
+        return
+    holes.append((sum(pts[p][0] for p in poly) / len(poly), sum(pts[p][1] for p in poly) / len(poly)))
+for i in range(0, n, 40):  # islands touching the shore
+    island(i, math.atan2(pts[i][1], pts[i][0]) + math.pi, 0.6, 9)
+for ch in range(5):  # three islands touching at one vertex in open water
+    t = 2 * math.pi * ch / 5 + 0.3
+    pts.append((5 * math.cos(t), 5 * math.sin(t)))
+    v = len(pts) - 1
+    island(v, t, 0.5, 7)
+    island(v, t + math.pi, 0.5, 7)
+    island(v, t + math.pi / 2, 0.3, 5)
+with open(sys.argv[1], "w") as f:
+    f.write(f"{len(pts)} 2 0 0\n")
+    f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(pts))
+    f.write(f"{len(segs)} 0\n")
+    f.writelines(f"{i} {a} {b}\n" for i, (a, b) in enumerate(segs))
+    f.write(f"{len(holes)}\n")
+    f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(holes))
+PY
+pdd() { # label, extra options
+  /usr/bin/time -f "%e %M" -o "$dir/time" "$build/examples/drivers/pdd-mesh" "$dir/lake.poly" \
+    --max-area "$area" --threads 2 "${@:2}" -o "$dir/out.node" --stats "$dir/stats.json" -q
+  python3 - "$1" "$dir" <<'PY'
+import json, sys
+label, d = sys.argv[1], sys.argv[2]
+s = json.load(open(f"{d}/stats.json"))
+wall, rss = open(f"{d}/time").read().split()
+print(f"| {label} | {s['triangles']} | {s['subdomains']} | {s['path']} | "
+      f"{s['shielded_triangles']} | {wall} | {int(rss) // 1024} |")
+PY
+}
+echo "| run | triangles | subdomains | path | shielded | wall s | max RSS MiB |"
+echo "|---|---|---|---|---|---|---|"
+for _ in 1 2; do
+  pdd "pdd-mesh, automatic"
+  pdd "pdd-mesh --subdomains 1" --subdomains 1
+  if [ -n "$triangle" ]; then # (Triangle's switches take no exponent: 6e-5 as 0.00006)
+    a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
+    /usr/bin/time -f "%e %M" -o "$dir/time" "$triangle" -pq20.7a"$a"Q "$dir/lake.poly"
+    read -r wall rss <"$dir/time"
+    echo "| Triangle 1.6 -pq20.7a$a | $(head -1 "$dir/lake.1.ele" | awk '{print $1}') | 1 | - | - | $wall | $((rss / 1024)) |"
+  fi
+done
