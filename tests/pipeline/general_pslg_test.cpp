@@ -300,6 +300,16 @@ TEST(GeneralPslg, DecoupledFromItsFacesVerifiedAndDeterministic) {
   }
 }
 
+/// d meshed with N = n on 1 thread, expected bitwise the same on 2 threads.
+pdd::generate_result mesh_on_one_and_two_threads(const pslg& d, double max_area, std::size_t n) {
+  pdd::generate_options o = options(max_area, 1);
+  o.subdomains = n;
+  pdd::generate_result one = pdd::generate(d, o);
+  o.threads = 2;
+  EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, pdd::generate(d, o).mesh));
+  return one;
+}
+
 /// The number of subdomains of d's decomposition into n that visit a vertex twice (at a pinch
 /// vertex, once per sector), after checking that the decomposition is valid.
 std::size_t subdomains_visiting_twice(const pslg& d, std::size_t n, const std::string& at) {
@@ -335,12 +345,7 @@ TEST(GeneralPslg, FacesThatTouchThemselvesAreDecoupled) {
       const std::string at = std::string(c.name) + " N = " + std::to_string(n);
       SCOPED_TRACE(at);
       visiting_twice += subdomains_visiting_twice(c.domain, n, at);
-      pdd::generate_options o = options(c.max_area, 1);
-      o.subdomains = n;
-      const pdd::generate_result one = pdd::generate(c.domain, o);
-      o.threads = 2;
-      const pdd::generate_result two = pdd::generate(c.domain, o);
-      EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, two.mesh));
+      const pdd::generate_result one = mesh_on_one_and_two_threads(c.domain, c.max_area, n);
       EXPECT_EQ(one.statistics.subdomains, n);
       EXPECT_EQ(one.statistics.interface_splits, 0u);
       EXPECT_EQ(one.statistics.shielded_triangles, small_sectors);
@@ -356,6 +361,8 @@ TEST(GeneralPslg, FacesThatTouchThemselvesAreDecoupled) {
       expect_segments_kept_once(one.mesh, c.domain, at);
       expect_close_to_triangle(one.mesh.triangles.size(), c.triangle_count, at);
       if (n == 16) {
+        pdd::generate_options o = options(c.max_area, 2);
+        o.subdomains = n;
         const pdd::generate_result native = pdd::generate<pdd::native::mesher>(c.domain, o);
         EXPECT_EQ(native.statistics.interface_splits, 0u);
         expect_verified(native.mesh, c.domain, c.max_area, at + " native");
@@ -578,12 +585,7 @@ TEST(GeneralPslg, DanglingSegmentsAndIsolatedVerticesStayInsideSubdomains) {
       const std::string at = std::string(c.name) + " N = " + std::to_string(n);
       SCOPED_TRACE(at);
       expect_inner_constraints_kept(c.domain, std::max(n, c.faces), at);
-      pdd::generate_options o = options(c.max_area, 1);
-      o.subdomains = n;
-      const pdd::generate_result one = pdd::generate(c.domain, o);
-      o.threads = 2;
-      const pdd::generate_result two = pdd::generate(c.domain, o);
-      EXPECT_TRUE(pdd::test::bitwise_equal(one.mesh, two.mesh));
+      const pdd::generate_result one = mesh_on_one_and_two_threads(c.domain, c.max_area, n);
       EXPECT_EQ(one.statistics.subdomains, std::max(n, c.faces));
       EXPECT_EQ(one.statistics.interface_splits, 0u);
       expect_verified(one.mesh, c.domain, c.max_area, at);
