@@ -104,8 +104,11 @@ inline pslg pinched_sectors() {
 /// A random domain of pinch vertices in a 10 x 10 square: up to two triangular holes touching
 /// the bottom side at one vertex each, and one to three vertices inside where two to four
 /// triangular holes touch; the face's sectors between them are random, down to about 2 deg, so
-/// many fall below 60 deg. Valid by construction. Deterministic for a seed.
-inline pslg random_pinched(std::uint32_t seed) {
+/// many fall below 60 deg. With crack_probability > 0, each sector between two holes at a
+/// vertex inside gets, with that probability, a crack: a dangling segment from the pinch
+/// vertex along the sector's bisector (the corner and the crack then form two small sectors
+/// where the face's is below 120 deg). Valid by construction. Deterministic for a seed.
+inline pslg random_pinched(std::uint32_t seed, double crack_probability = 0.0) {
   std::mt19937 rng(seed);
   const auto uniform = [&](double lo, double hi) {
     return std::uniform_real_distribution<double>(lo, hi)(rng);
@@ -140,7 +143,14 @@ inline pslg random_pinched(std::uint32_t seed) {
     const double r = uniform(0.5, 1.4);
     for (int j = 0; j < m; ++j) {
       add_wedge_hole(g, p, at, at + wedge[j], r);
-      at += wedge[j] + (360 - wedges) * gap[j] / weights;
+      const double sector = (360 - wedges) * gap[j] / weights;
+      if (crack_probability > 0.0 && uniform(0, 1) < crack_probability) {
+        const double mid = (at + wedge[j] + sector / 2) * std::numbers::pi / 180;
+        const point q = g.vertices[p];
+        g.add_segment(p,
+                      g.add_vertex({q.x + 0.7 * r * std::cos(mid), q.y + 0.7 * r * std::sin(mid)}));
+      }
+      at += wedge[j] + sector;
     }
   }
   g.rule = domain_rule::triangle;

@@ -34,7 +34,8 @@ namespace pdd::detail {
 struct face_region_set {
   std::vector<madd_region> regions; ///< by face id; empty when `refusal` is set
   /// Empty when every corner of a face on an internal constraint is >= 60 deg and no segment
-  /// inside a face starts at a small corner; else what stops decoupling (names the vertex).
+  /// inside a face starts at a small angle to one; else what stops decoupling (names the
+  /// vertex).
   std::string refusal;
 };
 
@@ -199,10 +200,11 @@ inline std::string small_constraint_corner(const pslg& g, const std::vector<inde
          "pipeline shields small angles on the domain boundary only";
 }
 
-/// Refusal text when a segment feature of the face starts at a vertex of its loops where the
-/// decoupled pipeline cannot take it: the apex of a corner below 60 deg (a shield would cross
-/// it), or at an angle below 60 deg to an internal constraint (an interface, which the
-/// kernel's refinement around that small angle may not split). Else empty.
+/// Refusal text when a segment feature of the face starts at a vertex of its loops at an angle
+/// below 60 deg to an internal constraint there (an interface, which the kernel's refinement
+/// around that small angle may split), else empty. A feature from the apex of a corner below
+/// 60 deg between external segments is taken: that corner is then not shielded, and the
+/// subdomain's kernel meshes its small angles (detail::subdomain_small_angles).
 inline std::string feature_at_corner(const pslg& g, const std::vector<std::vector<index_t>>& loops,
                                      const std::vector<madd_feature>& features,
                                      const std::vector<face_half_edge>& boundary_by_edge) {
@@ -221,20 +223,14 @@ inline std::string feature_at_corner(const pslg& g, const std::vector<std::vecto
       const index_t prev = loop[(i + loop.size() - 1) % loop.size()], v = loop[i],
                     next = loop[(i + 1) % loop.size()];
       const point pv = g.vertices[v];
-      const double corner = interior_angle_deg(g.vertices[prev], pv, g.vertices[next]);
       const auto by_end = [](const std::pair<point, point>& e, point p) { return e.first < p; };
       for (auto it = std::lower_bound(ends.begin(), ends.end(), pv, by_end);
            it != ends.end() && it->first == pv; ++it) {
         const point far = it->second;
-        const bool small_to_internal =
-            (internal(prev, v) && angle_deg(pv, far, g.vertices[prev]) < 60.0) ||
-            (internal(v, next) && angle_deg(pv, far, g.vertices[next]) < 60.0);
-        if (corner < 60.0 || small_to_internal)
+        if ((internal(prev, v) && angle_deg(pv, far, g.vertices[prev]) < 60.0) ||
+            (internal(v, next) && angle_deg(pv, far, g.vertices[next]) < 60.0))
           return "a segment inside a face (to " + to_string(far) + ") starts at " +
-                 vertex_name(g, v) +
-                 (corner < 60.0 ? ", the apex of a corner below 60 deg that the decoupled "
-                                  "pipeline shields"
-                                : " at an angle below 60 deg to an internal constraint");
+                 vertex_name(g, v) + " at an angle below 60 deg to an internal constraint";
       }
     }
   return {};
@@ -266,8 +262,8 @@ inline madd_region face_region(const pslg& g, const std::vector<std::vector<inde
 
 /// The faces of the domain of g (pdd::domain_faces by g.rule) as MADD regions, in face order,
 /// with their features (dangling segments, segments with the face on both sides, isolated
-/// vertices), or the first reason (a constraint corner below 60 deg, a feature
-/// at a corner below 60 deg or at a small angle to an internal constraint) why the
+/// vertices), or the first reason (a constraint corner below 60 deg, a feature at a small
+/// angle to an internal constraint) why the
 /// decoupled pipeline cannot take g. Each region's loops run along PSLG segments, tagged
 /// external with the segment id and marker.
 /// `faces` are g's (pdd::domain_faces by g.rule, or with validate_first for Triangle's).

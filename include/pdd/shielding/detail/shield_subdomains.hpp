@@ -10,6 +10,7 @@
 #include <pdd/shielding/detail/plan.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -24,12 +25,32 @@ inline std::vector<point> loop_points(const decomposition& d, const std::vector<
   return pts;
 }
 
+/// The pool ids where an inner constraint of subdomain s ends (sorted): a segment inside the
+/// subdomain that starts at a corner of its loops.
+inline std::vector<index_t> inner_constraint_ends(const subdomain& sd) {
+  std::vector<index_t> ends;
+  for (const inner_constraint& c : sd.inner) {
+    ends.push_back(c.a);
+    ends.push_back(c.b);
+  }
+  std::sort(ends.begin(), ends.end());
+  return ends;
+}
+
 /// Per loop of subdomain s: its domain-side angles < 60 deg (0 elsewhere, see shield_angles).
+/// A corner where an inner constraint of the subdomain starts (a segment from its apex into
+/// the subdomain) is not shielded either: a shield triangle would cross that segment. The
+/// corner and the segment then form sectors below 60 deg inside the subdomain, which its
+/// kernel meshes as it meshes any small angle between constraints (CGAL's clusters, the native
+/// kernel's concentric shells; the exempt triangles are pdd::find_cluster_exempt_triangles').
+/// Both sides of the corner are external edges of this subdomain only, so the splits the
+/// kernel makes there stay inside it.
 /// \throws pdd::decomposition_error when a small angle has a separator as one of its sides
 /// (MADD's angle criterion C1 with Phi0 >= 60 deg excludes it).
 inline std::vector<std::vector<double>> subdomain_small_angles(const decomposition& d,
                                                                std::size_t s) {
   const subdomain& sd = d.subdomains[s];
+  const std::vector<index_t> inner_ends = inner_constraint_ends(sd);
   std::vector<std::vector<double>> theta;
   for (std::size_t l = 0; l < sd.loops.size(); ++l) {
     const auto& loop = sd.loops[l];
@@ -42,6 +63,8 @@ inline std::vector<std::vector<double>> subdomain_small_angles(const decompositi
                                   std::to_string(theta[l][i]) + " deg at vertex " +
                                   std::to_string(loop[i]) +
                                   " is formed by a separator; it cannot be shielded");
+    for (std::size_t i = 0; i < n; ++i)
+      if (std::binary_search(inner_ends.begin(), inner_ends.end(), loop[i])) theta[l][i] = 0.0;
   }
   return theta;
 }

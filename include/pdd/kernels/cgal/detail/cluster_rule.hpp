@@ -23,12 +23,15 @@
 /// dropped only when the cluster has a small angle whose faces are in the domain; otherwise
 /// the encroached segment is split and the face is reconsidered, as in Ruppert's algorithm.
 ///
-/// Domains that are not of closed loops (internal and dangling constraints, issue 13) are meshed
-/// whole and unshielded, since pdd's shields are built on closed loops: there the clusters are
+/// Domains that are not of closed loops (internal and dangling constraints, issue 13) meshed
+/// whole are unshielded, since pdd's shields are built on closed loops: there the clusters are
 /// the remedy for small angles between constraints inside the domain (concentric shells, as in
 /// Triangle), and the faces this rule leaves are the documented exemption
-/// (pdd::find_cluster_exempt_triangles, mesh/cluster_exempt.hpp). The decoupling proofs are
-/// not involved: such domains are never decomposed (the pipeline refuses N > 1 for them).
+/// (pdd::find_cluster_exempt_triangles, mesh/cluster_exempt.hpp). Decoupled, such a small
+/// angle lies inside one subdomain (a segment inside a face, with MADD's separators kept away
+/// from it; a corner with such a segment at its apex is left unshielded): its clusters split
+/// only that subdomain's own segments, and the pipeline's invariance check would catch a
+/// split interface piece (none was seen in the tests).
 #pragma once
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
