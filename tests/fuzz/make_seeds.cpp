@@ -115,9 +115,9 @@ std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
           {"general-dangling-fan", dangling_fan()},
           {"general-layered", pdd::test::layered_domain(0.5)},
           {"general-pinched", pdd::test::pinched_rings()},
-          // (not pinched_sectors: meshed whole at 1/22 of its area, N = 1, the CGAL kernel's
-          // clusters at its vertex of eight segments end in a NaN point, a known limit)
+          {"general-pinched-sectors", pdd::test::pinched_sectors()},
           {"general-pinched-random", pdd::test::random_pinched(3)},
+          {"general-pinched-cracks", pdd::test::random_pinched(4, 0.6)},
           {"general-t-junctions", pdd::test::t_junction_grid()},
           {"general-combined", pdd::test::combined_domain(0.5)},
           {"general-random-1", pdd::test::random_arrangement(1)},

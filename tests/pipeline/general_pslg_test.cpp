@@ -727,6 +727,31 @@ TEST(GeneralPslg, CracksFromTheApexOfASmallCornerAreDecoupled) {
   EXPECT_LT(static_cast<double>(decoupled_triangles), 1.05 * static_cast<double>(whole_triangles));
 }
 
+TEST(GeneralPslg, SharpHolesBesideSmallSectorsAreMeshedWholeAtCoarseAreas) {
+  // Meshed whole by the CGAL kernel: a vertex where a sharp hole touches beside a small sector
+  // of the domain. CGAL's cluster there spans the hole's corner; pdd's domain-side
+  // encroachment never split the hole's sides, so the cluster never became reduced and its
+  // shells shrank until the split points rounded off their segments (before: a floating point
+  // exception, no end, an unresolvable split, or a mesh failing verification; 115 of 240 such
+  // runs of random pinched domains). Now the cluster rule looks at the run of small angles in
+  // the domain that the encroached segment bounds (kernels/cgal/detail/cluster_rule.hpp).
+  for (const double area : {1.0, 2.0, 4.2, 10.0}) { // pinched_sectors' area is 92.2
+    pdd::generate_options o = options(area);
+    o.subdomains = 1;
+    const pslg d = pdd::test::pinched_sectors();
+    expect_verified(pdd::generate(d, o).mesh, d, area, "sectors at " + std::to_string(area));
+  }
+  for (std::uint32_t seed = 1; seed <= 40; ++seed) {
+    const pslg d = pdd::test::random_pinched(seed, seed % 2 == 0 ? 0.6 : 0.0);
+    for (const double area : {0.5, 2.0, 5.0}) {
+      pdd::generate_options o = options(area);
+      o.subdomains = 1;
+      expect_verified(pdd::generate(d, o).mesh, d, area,
+                      "seed " + std::to_string(seed) + " at " + std::to_string(area));
+    }
+  }
+}
+
 TEST(GeneralPslg, RandomMapsWithFeaturesAreDecoupledOrRefused) {
   // 200 random maps with dangling segments and isolated vertices inside their faces, N = 12 on
   // 2 threads: verified with every constraint kept once, or refused naming an angle below

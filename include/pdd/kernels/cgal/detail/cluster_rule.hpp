@@ -19,9 +19,11 @@
 /// An exterior wedge needs no cluster: pdd's encroachment test (domain_gabriel) only counts
 /// vertices on a domain side of a segment, and a vertex on one segment of an exterior wedge lies
 /// on the outer side of the other, so the two segments can never encroach each other (the
-/// ping-pong that clusters exist to stop). The rule below is CGAL's, except that a face is
-/// dropped only when the cluster has a small angle whose faces are in the domain; otherwise
-/// the encroached segment is split and the face is reconsidered, as in Ruppert's algorithm.
+/// ping-pong that clusters exist to stop). The rule below is CGAL's on the run of small
+/// angles in the domain that the encroached segment bounds (domain_cluster), not on CGAL's
+/// whole cluster, which may span exterior wedges: a face is dropped only when that run exists,
+/// is reduced, and its rmin is below the face's shortest edge; otherwise the encroached
+/// segment is split and the face is reconsidered, as in Ruppert's algorithm.
 ///
 /// Domains that are not of closed loops (internal and dangling constraints, issue 13) meshed
 /// whole are unshielded, since pdd's shields are built on closed loops: there the clusters are
@@ -41,23 +43,36 @@
 #include <CGAL/Meshes/Triangulation_mesher_level_traits_2.h>
 
 #include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <tuple>
+#include <vector>
 
 namespace pdd::detail::cgal_mesh {
 
-/// Whether the cluster of v (CGAL's: the constrained edges from v to c.vertices, consecutive
-/// ones counter-clockwise less than 60 deg apart) has a small angle that lies in the domain:
-/// a sector between two counter-clockwise consecutive constrained edges of v, both in the
-/// cluster, with CGAL's small-angle test true, whose faces are in the domain.
-/// Complexity O(degree of v).
+/// The part of a cluster that one of its segments can interact with (see domain_cluster):
+/// whether the segment bounds a small angle in the domain, whether that part is reduced, and
+/// its rmin.
+struct domain_cluster_state {
+  bool meets_domain = false; ///< the segment bounds a small angle of the cluster in the domain
+  bool reduced = true;       ///< every segment of the part has been split on a shell
+  double rmin = 0.0;         ///< min over the part's angles of |x y|^2 / 4 (CGAL's rmin, squared)
+};
+
+/// The sectors of v between counter-clockwise consecutive constrained edges (v, x) and (v, y),
+/// in order, each with whether it is a small angle of cluster c in the domain: both edges in
+/// the cluster, CGAL's small-angle test true, its faces in the domain. Complexity O(degree).
 template <class Tr>
-bool cluster_meets_domain(const Tr& tr, const CGAL::Mesh_2::Clusters<Tr>& clusters,
-                          typename Tr::Vertex_handle v,
-                          const typename CGAL::Mesh_2::Clusters<Tr>::Cluster& c) {
+std::vector<std::tuple<typename Tr::Vertex_handle, typename Tr::Vertex_handle, bool>>
+cluster_sectors(const Tr& tr, const CGAL::Mesh_2::Clusters<Tr>& clusters,
+                typename Tr::Vertex_handle v,
+                const typename CGAL::Mesh_2::Clusters<Tr>::Cluster& c) {
+  std::vector<std::tuple<typename Tr::Vertex_handle, typename Tr::Vertex_handle, bool>> out;
   // A face (v, a, b), counter-clockwise, follows the edge (v, a) and precedes (v, b).
   auto fc = tr.incident_faces(v);
   const auto first = fc;
   while (!fc->is_constrained(Tr::cw(fc->index(v))))
-    if (++fc == first) return false; // no constrained edge at v
+    if (++fc == first) return out; // no constrained edge at v
   const auto start = fc;
   do {
     const auto x = fc->vertex(Tr::ccw(fc->index(v)));
@@ -71,11 +86,55 @@ bool cluster_meets_domain(const Tr& tr, const CGAL::Mesh_2::Clusters<Tr>& cluste
       closed = fc->is_constrained(Tr::ccw(i));
       ++fc;
     } while (!closed);
-    if (in_domain && c.vertices.count(x) != 0 && c.vertices.count(y) != 0 &&
-        clusters.is_small_angle(x->point(), v->point(), y->point()))
-      return true;
+    out.emplace_back(x, y,
+                     in_domain && c.vertices.count(x) != 0 && c.vertices.count(y) != 0 &&
+                         clusters.is_small_angle(x->point(), v->point(), y->point()));
   } while (fc != start);
-  return false;
+  return out;
+}
+
+/// The part of the cluster c of v (CGAL's: the constrained edges from v to c.vertices,
+/// consecutive ones counter-clockwise less than 60 deg apart) that its segment (v, w) can
+/// interact with: the run of consecutive small angles of c in the domain that (v, w) bounds.
+///
+/// Why not CGAL's own is_reduced() and rmin: CGAL's cluster also spans the small angles outside
+/// the domain (a sharp hole touching v). pdd's encroachment test (domain_gabriel) never lets a
+/// segment encroach another across such a hole, so the segments on either side of it are
+/// split independently, and those that nothing encroaches are never split: CGAL's cluster
+/// then never became reduced, its faces in the domain were never dropped, and the shells went
+/// on shrinking until the split points rounded off their segments (a hole of 31 deg beside a
+/// sector of 14 deg at one vertex; four holes 20-50 deg apart at another: a non-finite
+/// circumcentre, a floating point exception, or no end). A run of small angles in the domain
+/// is what can encroach each other, Shewchuk's cluster proper: it is reduced when each of its
+/// segments has been split on a shell. Complexity O(degree of v log).
+template <class Tr>
+domain_cluster_state domain_cluster(const Tr& tr, const CGAL::Mesh_2::Clusters<Tr>& clusters,
+                                    typename Tr::Vertex_handle v, typename Tr::Vertex_handle w,
+                                    const typename CGAL::Mesh_2::Clusters<Tr>::Cluster& c) {
+  domain_cluster_state out;
+  const auto sectors = cluster_sectors(tr, clusters, v, c);
+  const std::size_t m = sectors.size();
+  std::size_t at = m;
+  for (std::size_t i = 0; i < m && at == m; ++i)
+    if (std::get<2>(sectors[i]) && (std::get<0>(sectors[i]) == w || std::get<1>(sectors[i]) == w))
+      at = i;
+  if (at == m) return out;
+  std::size_t before = 0; // small angles of the run before sector `at`
+  while (before + 1 < m && std::get<2>(sectors[(at + m - before - 1) % m]))
+    ++before;
+  const auto split_on_shell = [&](typename Tr::Vertex_handle x) {
+    const auto it = c.vertices.find(x);
+    return it != c.vertices.end() && it->second;
+  };
+  out.meets_domain = true;
+  out.rmin = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < m; ++k) {
+    const auto& [x, y, small] = sectors[(at + m - before + k) % m];
+    if (!small) break;
+    out.rmin = std::min(out.rmin, CGAL::squared_distance(x->point(), y->point()) / 4.0);
+    out.reduced = out.reduced && split_on_shell(x) && split_on_shell(y);
+  }
+  return out;
 }
 
 /// CGAL's Refine_edges_base_with_clusters with its cluster rule restricted to clusters that
@@ -117,8 +176,8 @@ public:
   }
 
 private:
-  /// CGAL's condition for leaving a bad face whose circumcentre encroaches [v1, v2], plus
-  /// cluster_meets_domain.
+  /// CGAL's condition for leaving a bad face whose circumcentre encroaches [v1, v2], on the
+  /// cluster's small angles in the domain (domain_cluster).
   bool drops_face(typename Tr::Vertex_handle v1, typename Tr::Vertex_handle v2,
                   double shortest) const {
     typename clusters_type::Cluster c1, c2;
@@ -126,9 +185,9 @@ private:
     const bool at1 = clusters_.get_cluster(v1, v2, c1, it);
     const bool at2 = clusters_.get_cluster(v2, v1, c2, it);
     if (at1 == at2 || this->imperatively) return false;
-    const auto& c = at1 ? c1 : c2;
-    return c.is_reduced() && c.rmin < shortest &&
-           cluster_meets_domain(this->tr, clusters_, at1 ? v1 : v2, c);
+    const domain_cluster_state c = at1 ? domain_cluster(this->tr, clusters_, v1, v2, c1)
+                                       : domain_cluster(this->tr, clusters_, v2, v1, c2);
+    return c.meets_domain && c.reduced && c.rmin < shortest;
   }
 
   double shortest_squared_edge(const Face_handle& f) const {
