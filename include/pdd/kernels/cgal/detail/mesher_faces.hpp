@@ -19,10 +19,14 @@
 #include <CGAL/Mesher_level_default_implementations.h>
 #include <CGAL/Meshes/Triangulation_mesher_level_traits_2.h>
 
+#include <pdd/errors.hpp>
+
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <iterator>
+#include <sstream>
 #include <vector>
 
 namespace pdd::detail::cgal_mesh {
@@ -78,8 +82,23 @@ public:
     heap_.pop_back();
   }
 
+  /// The circumcentre of f. \throws unresolvable_input_error naming f's corners when f is so
+  /// flat that its circumcentre is not finite in double precision (CGAL divides by the
+  /// determinant of its edge vectors; the release build would go on with a NaN point).
   Point refinement_point_impl(const Face_handle& f) const {
-    return triangulation_ref_impl().circumcenter(f);
+    const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
+    const double qx = q.x() - p.x(), qy = q.y() - p.y(), rx = r.x() - p.x(), ry = r.y() - p.y();
+    const bool flat = qx * ry - qy * rx == 0.0;
+    const Point c = flat ? p : triangulation_ref_impl().circumcenter(f);
+    if (flat || !std::isfinite(c.x()) || !std::isfinite(c.y())) {
+      std::ostringstream what;
+      what.precision(17);
+      what << "the triangle (" << p << "), (" << q << "), (" << r
+           << ") is too flat to refine: its circumcentre is not finite in double precision (an "
+              "input angle or feature too small to resolve)";
+      throw unresolvable_input_error(-1, what.str());
+    }
+    return c;
   }
 
   void before_conflicts_impl(const Face_handle&, const Point&) {
