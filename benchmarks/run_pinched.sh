@@ -2,15 +2,19 @@
 # A lake whose islands touch the shore and each other at single vertices (pinch vertices, issue
 # 13): decoupled from its one face since 08cdcd5, meshed whole before. Runs pdd-mesh automatic
 # (2 threads), pdd-mesh with one subdomain (what such a domain got before: the kernel on the
-# whole domain) and, when given, Triangle 1.6 on the same .poly, alternately, twice.
-# Usage: benchmarks/run_pinched.sh BUILD_DIR [MAX_AREA] [TRIANGLE_EXE]
+# whole domain) and, when given, Triangle 1.6 on the same .poly, alternately, twice. With
+# CRACKS = 1, every sector of the water below 60 deg between two islands touching in open water
+# gets a crack: a segment from the pinch vertex along its bisector (decoupled since 033069a,
+# with that corner left to the kernel's clusters; refused for N > 1 and meshed whole before).
+# Usage: benchmarks/run_pinched.sh BUILD_DIR [MAX_AREA] [TRIANGLE_EXE] [CRACKS]
 set -euo pipefail
 build=${1:?build dir}
 area=${2:-6e-5}
 triangle=${3:-}
+cracks=${4:-0}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-python3 - "$dir/lake.poly" <<'PY'
+python3 - "$dir/lake.poly" "$cracks" <<'PY'
 import math, random, sys
 rng = random.Random(5)
 n = 400
@@ -21,6 +25,7 @@ for i in range(n):  # a wavy shore
     pts.append((r * math.cos(t), r * math.sin(t)))
 segs = [(i, (i + 1) % n) for i in range(n)]
 holes = []
+islands = []
 def orient(a, b, c):
     return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
 def crosses(p, q, r, s):
@@ -41,8 +46,32 @@ def island(apex, direction, size, k):  # a fan-shaped island touching `apex`; dr
         del pts[n0:], segs[s0:]
         return
     holes.append((sum(pts[p][0] for p in poly) / len(poly), sum(pts[p][1] for p in poly) / len(poly)))
+    islands.append(poly)
 for i in range(0, n, 40):  # islands touching the shore
     island(i, math.atan2(pts[i][1], pts[i][0]) + math.pi, 0.6, 9)
+def add_cracks(v, length):  # a crack along the bisector of each water sector < 60 deg at v
+    c = pts[v]
+    rays = sorted((math.atan2(pts[b if a == v else a][1] - c[1], pts[b if a == v else a][0] - c[0]),
+                   (a, b)) for a, b in segs if v in (a, b))
+    for k in range(len(rays)):
+        t0, t1 = rays[k][0], rays[(k + 1) % len(rays)][0]
+        gap = (t1 - t0) % (2 * math.pi)
+        if gap >= math.pi / 3:
+            continue
+        mid = t0 + gap / 2
+        q = (c[0] + length * math.cos(mid), c[1] + length * math.sin(mid))
+        inside = any(point_in(q, h) for h in islands)
+        if inside or any(crosses(c, q, pts[x], pts[y]) for x, y in segs):
+            continue
+        pts.append(q)
+        segs.append((v, len(pts) - 1))
+def point_in(q, poly):  # even-odd test against an island's polygon (vertex ids)
+    inside = False
+    for j in range(len(poly)):
+        a, b = pts[poly[j]], pts[poly[(j + 1) % len(poly)]]
+        if (a[1] > q[1]) != (b[1] > q[1]) and q[0] < a[0] + (q[1] - a[1]) * (b[0] - a[0]) / (b[1] - a[1]):
+            inside = not inside
+    return inside
 for ch in range(5):  # three islands touching at one vertex in open water
     t = 2 * math.pi * ch / 5 + 0.3
     pts.append((5 * math.cos(t), 5 * math.sin(t)))
@@ -50,6 +79,8 @@ for ch in range(5):  # three islands touching at one vertex in open water
     island(v, t, 0.5, 7)
     island(v, t + math.pi, 0.5, 7)
     island(v, t + math.pi / 2, 0.3, 5)
+    if sys.argv[2] == "1":
+        add_cracks(v, 0.25)
 with open(sys.argv[1], "w") as f:
     f.write(f"{len(pts)} 2 0 0\n")
     f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(pts))
