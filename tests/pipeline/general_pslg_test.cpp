@@ -638,32 +638,45 @@ TEST(GeneralPslg, SharedDataFilesDecoupled) {
   }
 }
 
+/// Triangle counts of the random pinched domains compared with their whole meshes.
+struct pinched_totals {
+  std::size_t decoupled = 0, whole = 0;
+};
+
+/// Meshes the random pinched domain d (`seed`) with N = 8 on 2 threads: decoupled, no
+/// interface split, verified with every constraint kept once; every fifth seed also bitwise
+/// the same on 1 thread, and counted in `totals` with its whole mesh. Returns its statistics.
+pdd::generate_statistics expect_pinched_decoupled(const pslg& d, std::uint32_t seed,
+                                                  pinched_totals& totals) {
+  const std::string at = "seed " + std::to_string(seed);
+  pdd::generate_options o = options(0.01, 2);
+  o.subdomains = 8;
+  const pdd::generate_result r = pdd::generate(d, o);
+  EXPECT_EQ(r.statistics.subdomains, 8u) << at;
+  EXPECT_EQ(r.statistics.interface_splits, 0u) << at;
+  expect_verified(r.mesh, d, 0.01, at);
+  expect_segments_kept_once(r.mesh, d, at);
+  if (seed % 5 == 0) {
+    o.threads = 1;
+    EXPECT_TRUE(pdd::test::bitwise_equal(r.mesh, pdd::generate(d, o).mesh)) << at;
+    totals.decoupled += r.mesh.triangles.size();
+    totals.whole += pdd::generate(d, options(0.01)).mesh.triangles.size();
+  }
+  return r.statistics;
+}
+
 TEST(GeneralPslg, RandomPinchedDomainsAreDecoupled) {
   // 60 random domains of holes touching each other and the outer boundary at pinch vertices,
   // sectors down to about 2 deg, N = 8 on 2 threads: every one decoupled and verified with
   // every constraint kept once (every fifth also bitwise the same on 1 thread), the small
   // sectors shielded one by one
-  std::size_t shielded = 0, decoupled_triangles = 0, whole_triangles = 0;
-  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
-    const std::string at = "seed " + std::to_string(seed);
-    const pslg d = pdd::test::random_pinched(seed);
-    pdd::generate_options o = options(0.01, 2);
-    o.subdomains = 8;
-    const pdd::generate_result r = pdd::generate(d, o);
-    EXPECT_EQ(r.statistics.subdomains, 8u) << at;
-    EXPECT_EQ(r.statistics.interface_splits, 0u) << at;
-    expect_verified(r.mesh, d, 0.01, at);
-    expect_segments_kept_once(r.mesh, d, at);
-    shielded += r.statistics.shielded_triangles;
-    if (seed % 5 == 0) {
-      o.threads = 1;
-      EXPECT_TRUE(pdd::test::bitwise_equal(r.mesh, pdd::generate(d, o).mesh)) << at;
-      decoupled_triangles += r.mesh.triangles.size();
-      whole_triangles += pdd::generate(d, options(0.01)).mesh.triangles.size();
-    }
-  }
+  std::size_t shielded = 0;
+  pinched_totals totals;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed)
+    shielded +=
+        expect_pinched_decoupled(pdd::test::random_pinched(seed), seed, totals).shielded_triangles;
   EXPECT_GT(shielded, 60u); // before, no pinched domain was decoupled (meshed whole)
-  EXPECT_LT(static_cast<double>(decoupled_triangles), 1.05 * static_cast<double>(whole_triangles));
+  EXPECT_LT(static_cast<double>(totals.decoupled), 1.05 * static_cast<double>(totals.whole));
 }
 
 /// The cracks of d (segments with a free end) that start at the apex of a corner below 60 deg:
@@ -704,27 +717,15 @@ TEST(GeneralPslg, CracksFromTheApexOfASmallCornerAreDecoupled) {
   // 40 random pinched domains with cracks into the sectors between the holes, N = 8: all
   // decoupled and verified, every fifth bitwise the same on 1 thread and compared with the
   // whole mesh
-  std::size_t small_corner_cracks = 0, decoupled_triangles = 0, whole_triangles = 0;
+  std::size_t small_corner_cracks = 0;
+  pinched_totals totals;
   for (std::uint32_t seed = 1; seed <= 40; ++seed) {
-    const std::string at = "seed " + std::to_string(seed);
     const pslg d = pdd::test::random_pinched(seed, 0.6);
     small_corner_cracks += cracks_at_small_corners(d);
-    pdd::generate_options o = options(0.01, 2);
-    o.subdomains = 8;
-    const pdd::generate_result r = pdd::generate(d, o);
-    EXPECT_EQ(r.statistics.subdomains, 8u) << at;
-    EXPECT_EQ(r.statistics.interface_splits, 0u) << at;
-    expect_verified(r.mesh, d, 0.01, at);
-    expect_segments_kept_once(r.mesh, d, at);
-    if (seed % 5 == 0) {
-      o.threads = 1;
-      EXPECT_TRUE(pdd::test::bitwise_equal(r.mesh, pdd::generate(d, o).mesh)) << at;
-      decoupled_triangles += r.mesh.triangles.size();
-      whole_triangles += pdd::generate(d, options(0.01)).mesh.triangles.size();
-    }
+    expect_pinched_decoupled(d, seed, totals);
   }
   EXPECT_GT(small_corner_cracks, 40u); // 49: what N > 1 refused before
-  EXPECT_LT(static_cast<double>(decoupled_triangles), 1.05 * static_cast<double>(whole_triangles));
+  EXPECT_LT(static_cast<double>(totals.decoupled), 1.05 * static_cast<double>(totals.whole));
 }
 
 TEST(GeneralPslg, SharpHolesBesideSmallSectorsAreMeshedWholeAtCoarseAreas) {
