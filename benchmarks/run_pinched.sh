@@ -51,10 +51,10 @@ for i in range(0, n, 40):  # islands touching the shore
     island(i, math.atan2(pts[i][1], pts[i][0]) + math.pi, 0.6, 9)
 def add_cracks(v, length):  # a crack along the bisector of each water sector < 60 deg at v
     c = pts[v]
-    rays = sorted((math.atan2(pts[b if a == v else a][1] - c[1], pts[b if a == v else a][0] - c[0]),
-                   (a, b)) for a, b in segs if v in (a, b))
+    rays = sorted(math.atan2(pts[b if a == v else a][1] - c[1], pts[b if a == v else a][0] - c[0])
+                  for a, b in segs if v in (a, b))
     for k in range(len(rays)):
-        t0, t1 = rays[k][0], rays[(k + 1) % len(rays)][0]
+        t0, t1 = rays[k], rays[(k + 1) % len(rays)]
         gap = (t1 - t0) % (2 * math.pi)
         if gap >= math.pi / 3:
             continue

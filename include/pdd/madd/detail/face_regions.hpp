@@ -263,9 +263,8 @@ inline madd_region face_region(const pslg& g, const std::vector<std::vector<inde
 /// The faces of the domain of g (pdd::domain_faces by g.rule) as MADD regions, in face order,
 /// with their features (dangling segments, segments with the face on both sides, isolated
 /// vertices), or the first reason (a constraint corner below 60 deg, a feature at a small
-/// angle to an internal constraint) why the
-/// decoupled pipeline cannot take g. Each region's loops run along PSLG segments, tagged
-/// external with the segment id and marker.
+/// angle to an internal constraint) why the decoupled pipeline cannot take g. Each region's
+/// loops run along PSLG segments, tagged external with the segment id and marker.
 /// `faces` are g's (pdd::domain_faces by g.rule, or with validate_first for Triangle's).
 /// Complexity O(n log n).
 inline face_region_set face_regions(const pslg& g, const domain_faces& faces) {
