@@ -71,12 +71,12 @@ class pipeline {
 public:
   /// Checks the options (check_generate_options), validates the domain once
   /// (detail::read_domain; one not of closed loops is read by Triangle's rule and decoupled
-  /// from its faces, detail::plan_general_domain, or meshed whole when it cannot be),
+  /// from its faces, detail::plan_general_domain),
   /// estimates the mesh size (pdd::estimate_mesh_size: the area bound, the sizing field and
   /// the local feature size; size_estimate()) and plans N from it (automatic_subdomains when
   /// options.subdomains == 0 and some area bound is given; N = 1 without any). \throws
-  /// pdd::decomposition_error for contradicting options (also subdomains > 1 on a domain not of
-  /// closed loops that cannot be decoupled); pdd::geometry_error for an invalid domain.
+  /// pdd::decomposition_error for contradicting options; pdd::geometry_error for an invalid
+  /// domain.
   pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
       : domain_(std::move(domain)), options_(std::move(options)), mesher_(std::move(mesher)),
         partitioner_(std::move(partitioner)),
@@ -93,7 +93,7 @@ public:
     stats_.estimated_triangles = estimate_.triangles;
     stats_.general_domain = general_;
     const detail::general_domain_plan general_plan =
-        general_ ? detail::plan_general_domain(start_ ? &*start_ : nullptr, options_)
+        general_ ? detail::plan_general_domain(start_ ? &*start_ : nullptr)
                  : detail::general_domain_plan{};
     stats_.subdomains =
         detail::planned_subdomains(options_, stats_.estimated_triangles, stats_.threads,

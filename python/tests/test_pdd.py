@@ -241,9 +241,12 @@ def test_general_pslg_internal_dangling_and_isolated():
         assert 6 in set(t.ravel().tolist())  # the isolated vertex is a mesh vertex
         # the dangling segment's ends are ends of mesh edges on segments (its subsegments)
         assert {4, 5} <= set(r["segments"].ravel().tolist())
-    # the diagonal makes 45 deg corners between faces: N > 1 is refused naming the corner
-    with pytest.raises(RuntimeError, match="cannot decouple this domain: the corner of 45.* deg"):
-        pdd.mesh(v, s, max_area=0.005, subdomains=4)
+    # the diagonal makes 45 deg corners between faces: caps around them, decoupled
+    r = pdd.mesh(v, s, max_area=0.005, subdomains=4)
+    assert r["statistics"]["subdomains"] >= 4
+    assert r["statistics"]["interface_splits"] == 0
+    assert "2 cap(s)" in r["statistics"]["plan_reason"]
+    assert abs(areas(r["vertices"], r["triangles"]).sum() - 1.0) < 1e-12
     # without it, the dangling segment and the isolated vertex lie inside subdomains
     r = pdd.mesh(v, np.vstack([sq["segments"], [[4, 5]]]), max_area=0.005, subdomains=4)
     assert r["statistics"]["subdomains"] == 4

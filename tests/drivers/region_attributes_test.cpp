@@ -176,19 +176,25 @@ TEST(PddMeshRegionAttributes, GeneralDomainDecoupledFromItsFaces) {
   EXPECT_NE(rings.output.find("verification passed"), std::string::npos) << rings.output;
   std::ifstream in3(stats);
   EXPECT_EQ(nlohmann::json::parse(in3)["subdomains"], 4);
-  // a chord at 30 deg to the bottom side: N > 1 is refused naming the vertex, exit 1, no file
+  // a chord at 30 deg to the bottom side (and 60 deg to the right side): caps around both
+  // ends, decoupled and verified, the plan's reason naming the first
   pdd::pslg chord;
   chord.add_loop(std::vector<pdd::point>{
       {0, 0}, {4, 0}, {4, 4 * std::tan(std::numbers::pi / 6)}, {4, 4}, {0, 4}});
   chord.add_segment(0, 2);
   const auto corner = pdd::test::temp_path("corner.poly");
   pdd::write_poly(corner, chord);
-  const auto no = run_mesh(corner.string() + " --max-area 0.05 --subdomains 4 -o " +
-                           pdd::test::temp_path("corner_out.node").string());
-  EXPECT_EQ(no.code, 1) << no.output;
-  EXPECT_NE(no.output.find("at vertex 0 (0, 0)"), std::string::npos) << no.output;
-  EXPECT_NE(no.output.find("below 60 deg"), std::string::npos) << no.output;
-  EXPECT_FALSE(fs::exists(pdd::test::temp_path("corner_out.node")));
+  const auto capped =
+      run_mesh(corner.string() + " --max-area 0.05 --subdomains 4 --verify -o " +
+               pdd::test::temp_path("corner_out.node").string() + " --stats " + stats.string());
+  ASSERT_EQ(capped.code, 0) << capped.output;
+  EXPECT_NE(capped.output.find("verification passed"), std::string::npos) << capped.output;
+  EXPECT_NE(capped.output.find("2 cap(s) (the first at vertex 0 (0, 0))"), std::string::npos)
+      << capped.output;
+  std::ifstream in4(stats);
+  const nlohmann::json capped_stats = nlohmann::json::parse(in4);
+  EXPECT_EQ(capped_stats["subdomains"], 4);
+  EXPECT_EQ(capped_stats["interface_splits"], 0);
 }
 
 } // namespace region_attributes_test

@@ -21,9 +21,9 @@
 //   way (a shielded corner has its vertices on the two segments of a small angle, so the
 //   cluster exemption covers it; a face that touches itself at a pinch vertex is shielded per
 //   sector, a corner with a segment inside the face from its apex is left to the kernel's
-//   clusters), or refuses it with a pdd::decomposition_error (a corner < 60 deg on a segment
-//   between faces, or a segment inside a face at < 60 deg to one); a meshing_error or any
-//   other exception there is a finding.
+//   clusters, a corner < 60 deg on a segment between faces gets a cap, one subdomain), or
+//   refuses it with a pdd::decomposition_error (MADD finds no separator clear of a face's
+//   features); a meshing_error or any other exception there is a finding.
 //
 // Refusals of bad input are passes: pdd::input_error (parser), pdd::geometry_error (validate,
 // shields), pdd::decomposition_error (MADD cannot split the domain as asked), pdd::limit_error,

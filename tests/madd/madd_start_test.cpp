@@ -18,7 +18,9 @@
 
 #include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
+#include <numbers>
 #include <string>
 #include <utility>
 #include <vector>
@@ -93,13 +95,13 @@ TEST(MaddStart, InverseAreaIntegralOnGivenTrianglesIsTheDomainsOwn) {
   }
 }
 
-TEST(MaddStart, FacesAndRefusalsAreThoseOfFaceDecoupling) {
+TEST(MaddStart, FacesAndCapsAreThoseOfFaceDecoupling) {
   for (auto [name, g] : domains()) {
     SCOPED_TRACE(name);
     const pdd::madd_start start(g);
     EXPECT_EQ(start.general(), !pdd::has_closed_loops(g));
     if (!start.general()) {
-      EXPECT_TRUE(start.refusal().empty());
+      EXPECT_TRUE(start.cap_reason().empty());
       std::size_t components = 0; // one region per outer loop
       for (const pdd::polygon_loop& l : pdd::find_loops(g).loops)
         components += l.bounds_domain_inside ? 1 : 0;
@@ -107,15 +109,15 @@ TEST(MaddStart, FacesAndRefusalsAreThoseOfFaceDecoupling) {
       continue;
     }
     const pdd::face_decoupling_report r = pdd::face_decoupling(g);
-    EXPECT_EQ(start.refusal(), r.refusal);
-    EXPECT_EQ(start.regions().size(), r.faces);
-    EXPECT_EQ(start.refusal().empty(), !start.regions().empty());
+    EXPECT_EQ(start.cap_reason(), r.cap_reason);
+    EXPECT_EQ(start.regions().size(), r.regions);
+    EXPECT_EQ(r.cap_reason.empty(), r.regions == r.faces);
   }
   // the pinched rings' face touches itself: its loops are weakly simple, visiting each pinch
   // vertex once per sector (the outer loop (5, 0) twice, the one hole loop (5, 5) twice)
   const pslg rings = pdd::test::pinched_rings();
   const pdd::madd_start pinched(rings);
-  EXPECT_TRUE(pinched.refusal().empty()) << pinched.refusal();
+  EXPECT_TRUE(pinched.cap_reason().empty()) << pinched.cap_reason();
   ASSERT_EQ(pinched.regions().size(), 1u);
   const auto& loops = pinched.regions()[0].loops;
   ASSERT_EQ(loops.size(), 2u);
@@ -135,7 +137,6 @@ TEST(MaddStart, DecomposingFromOneStartIsDecomposingTheDomain) {
   for (auto [name, g] : domains()) {
     SCOPED_TRACE(name);
     const pdd::madd_start start(g);
-    if (!start.refusal().empty()) continue;
     for (const std::size_t n : {std::size_t{8}, std::size_t{16}}) {
       pdd::madd_options o;
       o.subdomains = std::max(n, start.regions().size());
@@ -144,6 +145,75 @@ TEST(MaddStart, DecomposingFromOneStartIsDecomposingTheDomain) {
       pdd::test::expect_same_decomposition(once,
                                            pdd::decompose(start, o)); // the start is not used up
     }
+  }
+}
+
+/// A unit square with its diagonal (0, 0) - (1, 1): corners of 45 deg on the segment between
+/// its two faces at both ends.
+pslg square_with_diagonal() {
+  pslg g;
+  g.add_loop(std::vector<pdd::point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  g.add_segment(0, 2);
+  g.rule = pdd::domain_rule::triangle;
+  return g;
+}
+
+TEST(MaddStart, CapsAroundSmallAnglesBetweenFacesAreKeptWholeWithChordsAtWideAngles) {
+  const pslg g = square_with_diagonal();
+  const pdd::madd_start start(g);
+  ASSERT_EQ(start.regions().size(), 4u); // the two faces less the caps, two caps
+  const pdd::face_decoupling_report r = pdd::face_decoupling(g);
+  ASSERT_EQ(r.caps.size(), 2u);
+  EXPECT_EQ(r.faces, 2u);
+  EXPECT_EQ(r.caps[0].first, (pdd::point{0, 0}));
+  EXPECT_EQ(r.caps[1].first, (pdd::point{1, 1}));
+  EXPECT_DOUBLE_EQ(r.caps[0].second, 0.25); // a quarter of the distance to (1, 0)
+  double area = 0.0;
+  std::size_t caps = 0;
+  for (const pdd::detail::madd_region& region : start.regions()) {
+    area += region.area;
+    if (!region.keep_whole) continue;
+    ++caps;
+    ASSERT_EQ(region.loops.size(), 1u);
+    const pdd::detail::madd_loop& l = region.loops[0];
+    ASSERT_EQ(region.features.size(), 1u); // the diagonal's piece
+    EXPECT_EQ(region.features[0].segment, 4u);
+    std::size_t chords = 0;
+    for (std::size_t i = 0; i < l.size(); ++i) {
+      const pdd::point prev = l.points[(i + l.size() - 1) % l.size()], v = l.points[i],
+                       next = l.points[(i + 1) % l.size()];
+      chords += l.tags[i].external ? 0 : 1;
+      const bool apex = v == r.caps[0].first || v == r.caps[1].first;
+      if (!apex) {
+        EXPECT_GE(pdd::detail::interior_angle_deg(prev, v, next), 65.0 - 1e-9);
+      }
+      if (!l.tags[i].external) { // a chord: at most 50 deg of arc, both ends on the circle
+        EXPECT_LE(pdd::detail::distance(v, next),
+                  2 * std::sin(25 * std::numbers::pi / 180) * r.caps[0].second * (1 + 1e-12));
+      }
+    }
+    EXPECT_EQ(chords, 2u); // one per 45 deg sector
+  }
+  EXPECT_EQ(caps, 2u);
+  EXPECT_NEAR(area, 1.0, 1e-12);
+  for (const std::size_t n : {std::size_t{4}, std::size_t{16}}) {
+    const pdd::decomposition d = pdd::decompose(start, pdd::madd_options{.subdomains = n});
+    ASSERT_EQ(d.subdomains.size(), n);
+    const pdd::decomposition_report rep = pdd::validate_decomposition(d, g);
+    EXPECT_TRUE(rep.ok()) << (rep.problems.empty() ? "" : rep.problems.front());
+    std::size_t whole_caps = 0; // subdomains with every vertex inside a cap's circle
+    for (const pdd::subdomain& sd : d.subdomains) {
+      bool inside = true;
+      for (const auto& loop : sd.loops)
+        for (const pdd::index_t v : loop) {
+          const pdd::point p = d.vertices[v];
+          inside = inside && std::min(pdd::detail::distance(p, r.caps[0].first),
+                                      pdd::detail::distance(p, r.caps[1].first)) <=
+                                 r.caps[0].second * (1 + 1e-12);
+        }
+      whole_caps += inside ? 1 : 0;
+    }
+    EXPECT_EQ(whole_caps, 2u) << n;
   }
 }
 

@@ -43,16 +43,15 @@ namespace pdd {
 /// ids; see validate_decomposition().
 /// \tparam P a GraphPartitioner (default: METIS when found).
 /// A general PSLG (pdd::has_closed_loops false: internal constraints, loops nested without a
-/// hole point) starts from its faces (pdd::domain_faces by g.rule), each at least one
-/// subdomain: a segment between two faces is an interface of the result (edge_tag::on_segment)
-/// and gets the vertices of the separators that end on it from either side. Its dangling
-/// segments, segments with one face on both sides and isolated vertices become inner
+/// hole point) starts from its faces (pdd::domain_faces by g.rule; with caps, kept whole, where
+/// a corner < 60 deg lies on a segment between two of them, pdd::face_decoupling), each at least
+/// one subdomain: a segment between two regions is an interface of the result
+/// (edge_tag::on_segment) and gets the vertices of the separators that end on it from either side.
+/// Its dangling segments, segments with one face on both sides and isolated vertices become inner
 /// constraints (pdd::inner_constraint) of the subdomain that holds them: no separator comes
 /// within the split's boundary spacing of them (madd/detail/features.hpp).
 /// \pre g is valid (validate()).
-/// \throws geometry_error as find_loops for bad input; decomposition_error for bad options, for
-/// a general PSLG with a corner < 60 deg on an internal constraint
-/// or a segment inside a face at such an angle (pdd::face_decoupling; the message names it), or
+/// \throws geometry_error as find_loops for bad input; decomposition_error for bad options, or
 /// when the domain cannot be split as asked (a subdomain too thin or with too few junction
 /// triangles after max_refinement_levels: the message names the subdomain and the reason).
 /// Complexity: about O(sum over splits of |Z| log |Z|); N = 1024 on a pipe cross-section takes
@@ -64,7 +63,6 @@ decomposition decompose(const madd_start& start, const madd_options& o = {},
                         const P& partitioner = {}, decomposition_statistics* stats = nullptr) {
   const auto t0 = std::chrono::steady_clock::now();
   detail::check_madd_options(o);
-  if (!start.refusal().empty()) throw decomposition_error("MADD: " + start.refusal());
   detail::madd_state state(start.regions(), o);
   const double global_h = detail::global_refinement_length(state, o);
   const detail::madd_split_options so = detail::split_options_for(o);

@@ -1,9 +1,9 @@
 /// \file madd_start.hpp
 /// pdd::madd_start: the regions pdd::decompose starts from, found once: the connected
-/// components of a domain of closed loops, or the faces of a general PSLG (issue 13) with the
-/// reason, if any, why they cannot be decoupled. A caller that decomposes one domain several
-/// times (the pipeline's plan and its decomposition, Algorithm 7.1's rounds of the geometric
-/// path) builds the domain's triangulation once instead of at every call.
+/// components of a domain of closed loops, or the faces of a general PSLG (issue 13), with
+/// caps where a small angle lies on a segment between two of them. A caller that decomposes one
+/// domain several times (the pipeline's plan and its decomposition, Algorithm 7.1's rounds of the
+/// geometric path) builds the domain's triangulation once instead of at every call.
 #pragma once
 
 #include <pdd/core/pslg.hpp>
@@ -41,21 +41,21 @@ public:
     detail::face_region_set f =
         g.rule == domain_rule::triangle ? detail::face_regions(g, faces) : detail::face_regions(g);
     regions_ = std::move(f.regions);
-    refusal_ = std::move(f.refusal);
+    cap_reason_ = std::move(f.cap_reason);
   }
 
   /// True for a domain that is not one of closed loops (MADD starts from its faces).
   bool general() const noexcept { return general_; }
   /// The regions MADD starts from: one per connected component of a domain of closed loops,
-  /// one per face of a general PSLG; empty when refusal() is set.
+  /// one per face of a general PSLG, less its caps, and one per cap (detail::cap_corners).
   const std::vector<detail::madd_region>& regions() const noexcept { return regions_; }
-  /// Empty when MADD can start from the regions; else why a general PSLG cannot be decoupled
-  /// (pdd::face_decoupling_report::refusal).
-  const std::string& refusal() const noexcept { return refusal_; }
+  /// Empty unless a general PSLG got caps at small angles between its faces; then how many
+  /// and why (pdd::face_decoupling_report::cap_reason).
+  const std::string& cap_reason() const noexcept { return cap_reason_; }
 
 private:
   std::vector<detail::madd_region> regions_;
-  std::string refusal_;
+  std::string cap_reason_;
   bool general_ = false;
 };
 

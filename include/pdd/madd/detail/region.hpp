@@ -60,6 +60,8 @@ struct madd_region {
   std::vector<madd_loop> loops;
   double area = 0.0;
   std::vector<madd_feature> features;
+  /// Never split: a cap around a small angle between faces (detail::cap_corners).
+  bool keep_whole = false;
 };
 
 /// A vertex that a split kept on an edge of its region (a separator ends there). Every region

@@ -96,8 +96,9 @@ struct madd_state {
   /// What orders the splits: the policy's priority, else the area (largest first).
   double split_key(std::size_t i) const { return by_policy ? priority[i] : leaves[i].region.area; }
   /// Whether leaf i still has to be split (by area: larger than the bound; by policy: a
-  /// positive priority).
+  /// positive priority); never a region kept whole (a cap).
   bool wanted(std::size_t i, const madd_options& o) const {
+    if (leaves[i].region.keep_whole) return false;
     if (by_policy) return priority[i] > 0.0;
     return !by_area || leaves[i].region.area > o.max_subdomain_area;
   }

@@ -295,9 +295,11 @@ inline std::vector<index_t> separator_vertices(const subdomain& sd) {
 }
 
 /// Inner constraints (general PSLGs): ids in range, each segment on the input segment it
-/// names (same ends, same marker; adds its length to `covered`), and no vertex of one on a
-/// separator of its subdomain (no separator touches them; a separator of a neighbouring face
-/// may end at a vertex they share on the segment between the two faces).
+/// names (the whole segment, or inside a cap a piece of it from its end; same marker; adds
+/// its length to `covered`), and no end of an input segment on a separator of its subdomain
+/// (no separator touches them; a separator of a neighbouring face may end at a vertex they
+/// share on the segment between the two faces; a cap's chords meet its pieces where they are
+/// cut, at >= 65 deg).
 inline void check_inner_constraints(const decomposition& d, const pslg& g,
                                     std::vector<double>& covered, std::size_t max_problems,
                                     std::vector<std::string>& pr) {
@@ -312,10 +314,11 @@ inline void check_inner_constraints(const decomposition& d, const pslg& g,
         pr.push_back(at + ": vertex id out of range");
         continue;
       }
-      if (on_interface(c.a) || on_interface(c.b))
-        pr.push_back(at + " touches a separator at vertex " +
-                     std::to_string(on_interface(c.a) ? c.a : c.b));
-      if (c.segment == no_index) continue;
+      if (c.segment == no_index) {
+        if (on_interface(c.a))
+          pr.push_back(at + " touches a separator at vertex " + std::to_string(c.a));
+        continue;
+      }
       if (c.segment >= g.segments.size()) {
         pr.push_back(at + ": segment id out of range");
         continue;
@@ -323,19 +326,29 @@ inline void check_inner_constraints(const decomposition& d, const pslg& g,
       const segment& sg = g.segments[c.segment];
       const point pa = g.vertices[sg.a], pb = g.vertices[sg.b];
       const point qa = d.vertices[c.a], qb = d.vertices[c.b];
-      if (!((qa == pa && qb == pb) || (qa == pb && qb == pa)) || c.marker != sg.marker)
-        pr.push_back(at + " is not input segment " + std::to_string(c.segment));
+      const auto input_end = [&](point q) { return q == pa || q == pb; };
+      for (const index_t v : {c.a, c.b})
+        if (on_interface(v) && input_end(d.vertices[v]))
+          pr.push_back(at + " touches a separator at vertex " + std::to_string(v));
+      const double len = distance(pa, pb);
+      const auto off = [&](point p) {
+        return std::abs((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / len;
+      };
+      if (!(input_end(qa) || input_end(qb)) || off(qa) > 1e-9 * len || off(qb) > 1e-9 * len ||
+          c.marker != sg.marker)
+        pr.push_back(at + " is not (a piece from an end of) input segment " +
+                     std::to_string(c.segment));
       else
-        covered[c.segment] += distance(pa, pb);
+        covered[c.segment] += distance(qa, qb);
     }
   }
 }
 
 /// The external edges and inner constraints cover every input segment exactly (relative
 /// 1e-9), except, by Triangle's rule, the segments with no domain face beside them (not
-/// meshed) and those between two faces of a general PSLG: the latter, not covered at all,
-/// must add up to the length of the interface edges on input segments (edge_tag::on_segment),
-/// which do not name their segment.
+/// meshed) and those between two faces of a general PSLG: what of the latter they leave
+/// uncovered (all of it, or all but the pieces inside caps) must add up to the length of the
+/// interface edges on input segments (edge_tag::on_segment), which do not name their segment.
 inline void check_segment_coverage(const pslg& g, const std::vector<double>& covered,
                                    double on_segment_length, std::size_t max_problems,
                                    std::vector<std::string>& pr) {
@@ -349,8 +362,8 @@ inline void check_segment_coverage(const pslg& g, const std::vector<double>& cov
   for (std::size_t sg = 0; sg < g.segments.size() && pr.size() < max_problems; ++sg) {
     const double len = distance(g.vertices[g.segments[sg].a], g.vertices[g.segments[sg].b]);
     if (!meshed[sg] && covered[sg] == 0.0) continue; // dangling outside the domain: not meshed
-    if (covered[sg] == 0.0 && on_segment_length > 0.0)
-      uncovered += len;
+    if (covered[sg] < len * (1.0 - 1e-9) && on_segment_length > 0.0)
+      uncovered += len - covered[sg];
     else if (std::abs(covered[sg] - len) > 1e-9 * len)
       pr.push_back("input segment " + std::to_string(sg) + " is covered to length " +
                    std::to_string(covered[sg]) + " of " + std::to_string(len));

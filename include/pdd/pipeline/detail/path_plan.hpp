@@ -45,13 +45,6 @@ inline constexpr const char* general_domain_reason =
     "one subdomain: the domain is not one of closed loops (internal or dangling segments, "
     "isolated vertices, touching loops or internal boundaries), the kernel meshes it whole";
 
-/// The error for options.subdomains = n > 1 on a domain that is not one of closed loops and
-/// cannot be decoupled (`why`: detail::face_regions's refusal).
-inline std::string general_domain_error(std::size_t n, const std::string& why) {
-  return "subdomains = " + std::to_string(n) + " cannot decouple this domain: " + why +
-         "; use subdomains = 1, or 0 (automatic) for one subdomain";
-}
-
 /// The plan's reason for falling back to N = 1 on too many split points.
 inline std::string split_point_reason(std::size_t split_points, double estimated,
                                       const planning_options& p) {

@@ -27,45 +27,39 @@ namespace pdd::detail {
 
 /// What the plan knows of a domain that is not one of closed loops.
 struct general_domain_plan {
-  std::size_t faces = 0; ///< faces of the domain (each at least one subdomain when decoupled)
-  std::string refusal;   ///< why it cannot be decoupled (pdd::madd_start); empty: it can
+  std::size_t regions = 0; ///< faces and caps (each at least one subdomain)
+  std::string cap_reason;  ///< the caps and why (pdd::madd_start::cap_reason)
 };
 
-/// A domain that is not one of closed loops (read by Triangle's rule): its faces, which MADD
-/// starts from (`start`: null when one subdomain is asked for, the faces are then not needed).
-/// \throws pdd::decomposition_error for options.subdomains > 1 on a domain that cannot be
-/// decoupled (pdd::madd_start::refusal: a constraint corner < 60 deg, a segment inside a face
-/// at such a corner; the message names it).
-inline general_domain_plan plan_general_domain(const madd_start* start,
-                                               const generate_options& options) {
+/// A domain that is not one of closed loops (read by Triangle's rule): the regions MADD starts
+/// from (`start`: null when one subdomain is asked for, they are then not needed).
+inline general_domain_plan plan_general_domain(const madd_start* start) {
   general_domain_plan p;
   if (!start) return p;
-  p.faces = start->regions().size();
-  p.refusal = start->refusal();
-  if (options.subdomains > 1 && !p.refusal.empty())
-    throw decomposition_error(general_domain_error(options.subdomains, p.refusal));
+  p.regions = start->regions().size();
+  p.cap_reason = start->cap_reason();
   return p;
 }
 
 /// N for a domain that is not one of closed loops, from the N `planned` as for closed loops:
-/// 1 when one is planned or the domain cannot be decoupled, else at least one subdomain per
-/// face (MADD splits faces, it never merges two: the segment between them would lie inside a
-/// subdomain). `reason` receives the plan's reason, which says when N was raised.
+/// 1 when one is planned, else at least one subdomain per region (MADD splits regions, it
+/// never merges two: the segment between them would lie inside a subdomain). `reason`
+/// receives the plan's reason, which says when N was raised and why there are caps.
 inline std::size_t general_domain_subdomains(std::size_t planned, const general_domain_plan& p,
                                              std::string& reason) {
-  if (planned <= 1 || !p.refusal.empty()) {
-    reason = planned <= 1 ? std::string(general_domain_reason)
-                          : "one subdomain: the domain is not one of closed loops and cannot be "
-                            "decoupled: " +
-                                p.refusal;
+  if (planned <= 1) {
+    reason = general_domain_reason;
     return 1;
   }
-  reason = "the domain is not one of closed loops: MADD from its " + std::to_string(p.faces) +
-           " faces, the segments between faces are interfaces";
-  if (planned < p.faces)
-    reason += "; N raised from " + std::to_string(planned) + " to " + std::to_string(p.faces) +
+  reason = "the domain is not one of closed loops: MADD from its " + std::to_string(p.regions) +
+           (p.cap_reason.empty() ? " faces, the segments between faces are interfaces"
+                                 : " regions (faces and caps), the segments between them are "
+                                   "interfaces; " +
+                                       p.cap_reason);
+  if (planned < p.regions)
+    reason += "; N raised from " + std::to_string(planned) + " to " + std::to_string(p.regions) +
               ", one subdomain per face at least";
-  return std::max(planned, p.faces);
+  return std::max(planned, p.regions);
 }
 
 /// The plan's N: o.subdomains when set; else automatic_subdomains of the estimate when some

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# A layered section cut by low-angle (thrust) faults (issue 13): every fault meets the layer
+# interfaces at below 60 deg, so each crossing is a corner below 60 deg on segments between two
+# faces. Refused for N > 1 and meshed whole before caps; since caps (madd/detail/corner_caps.hpp)
+# each crossing is a cap, one subdomain, and the rest is decoupled. Runs pdd-mesh automatic
+# (2 threads), pdd-mesh with one subdomain (what such a domain got before) and, when given,
+# Triangle 1.6 on the same .poly, alternately, twice.
+# Usage: benchmarks/run_faulted.sh BUILD_DIR [MAX_AREA] [TRIANGLE_EXE]
+set -euo pipefail
+build=${1:?build dir}
+area=${2:-2e-4}
+triangle=${3:-}
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+python3 - "$dir/faulted.poly" <<'PY'
+import math, sys
+W, H, step = 40.0, 10.0, 0.5
+nx = int(W / step)
+def interface(j):  # layer interface j (1..4): a wavy polyline from the left side to the right
+    return [(i * step, 2.0 * j + 0.4 * math.sin(i * step / 3 + j)) for i in range(nx + 1)]
+curves = [[(0.0, 0.0), (W, 0.0)], [(0.0, H), (W, H)]]  # bottom, top (sides added below)
+curves += [interface(j) for j in range(1, 5)]
+faults = [((3.0 + 11 * k, 0.0), math.radians(25 + 5 * k)) for k in range(3)]  # start, dip
+fault_lines = [[p, (p[0] + H / math.tan(d), H)] for p, d in faults]
+def cross(p, q, r, s):  # parameters (t on pq, u on rs) of the crossing, or None
+    d = (q[0] - p[0]) * (s[1] - r[1]) - (q[1] - p[1]) * (s[0] - r[0])
+    if d == 0:
+        return None
+    t = ((r[0] - p[0]) * (s[1] - r[1]) - (r[1] - p[1]) * (s[0] - r[0])) / d
+    u = ((r[0] - p[0]) * (q[1] - p[1]) - (r[1] - p[1]) * (q[0] - p[0])) / d
+    return (t, u) if 0 < t < 1 and 0 <= u <= 1 else None
+pieces = []  # (polyline) after inserting the crossings into both curves
+for f in fault_lines:
+    cuts = [(0.0, f[0]), (1.0, f[1])]
+    for c in curves[2:]:
+        for i in range(len(c) - 1):
+            tu = cross(f[0], f[1], c[i], c[i + 1])
+            if tu:
+                x = (f[0][0] + tu[0] * (f[1][0] - f[0][0]), f[0][1] + tu[0] * (f[1][1] - f[0][1]))
+                c.insert(i + 1, x)
+                cuts.append((tu[0], x))
+                break
+    pieces.append([x for _, x in sorted(cuts)])
+for c in curves[:2]:  # the faults' ends on the bottom and top
+    c[1:1] = sorted(f[0 if c[0][1] == 0 else 1] for f in fault_lines)
+left = [(0.0, 0.0)] + [c[0] for c in curves[2:]] + [(0.0, H)]
+right = [(W, 0.0)] + [c[-1] for c in curves[2:]] + [(W, H)]
+ids, pts, segs = {}, [], set()
+def vid(p):
+    if p not in ids:
+        ids[p] = len(pts)
+        pts.append(p)
+    return ids[p]
+for c in curves + pieces + [left, right]:
+    for a, b in zip(c, c[1:]):
+        segs.add((min(vid(a), vid(b)), max(vid(a), vid(b))))
+segs = sorted(segs)
+with open(sys.argv[1], "w") as f:
+    f.write(f"{len(pts)} 2 0 0\n")
+    f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(pts))
+    f.write(f"{len(segs)} 0\n")
+    f.writelines(f"{i} {a} {b}\n" for i, (a, b) in enumerate(segs))
+    f.write("0\n")
+PY
+pdd() { # label, extra options
+  /usr/bin/time -f "%e %M" -o "$dir/time" "$build/examples/drivers/pdd-mesh" "$dir/faulted.poly" \
+    --max-area "$area" --threads 2 "${@:2}" -o "$dir/out.node" --stats "$dir/stats.json" -q
+  python3 - "$1" "$dir" <<'PY'
+import json, sys
+label, d = sys.argv[1], sys.argv[2]
+s = json.load(open(f"{d}/stats.json"))
+wall, rss = open(f"{d}/time").read().split()
+print(f"| {label} | {s['triangles']} | {s['subdomains']} | {s['path']} | {wall} | "
+      f"{int(rss) // 1024} |")
+PY
+}
+echo "plan: $("$build/examples/drivers/pdd-mesh" "$dir/faulted.poly" --max-area "$area" \
+  --threads 2 --stats "$dir/plan.json" -o "$dir/plan.node" -q >/dev/null &&
+  python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['plan_reason'])" "$dir/plan.json")"
+echo "| run | triangles | subdomains | path | wall s | max RSS MiB |"
+echo "|---|---|---|---|---|---|"
+for _ in 1 2; do
+  pdd "pdd-mesh, automatic"
+  pdd "pdd-mesh --subdomains 1" --subdomains 1
+  if [ -n "$triangle" ]; then # (Triangle's switches take no exponent)
+    a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
+    /usr/bin/time -f "%e %M" -o "$dir/time" "$triangle" -pq20.7a"$a"Q "$dir/faulted.poly"
+    read -r wall rss <"$dir/time"
+    echo "| Triangle 1.6 -pq20.7a$a | $(head -1 "$dir/faulted.1.ele" | awk '{print $1}') | 1 | - | $wall | $((rss / 1024)) |"
+  fi
+done
