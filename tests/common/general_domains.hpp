@@ -402,4 +402,35 @@ inline pslg sub_degree_angle_domain() {
   return g;
 }
 
+/// A 12 x 6 section in three layers (interfaces y = 2 and y = 4) cut by two thrust faults:
+/// one from (1, 0) dipping 30 deg to the top side, one from (6, 0) dipping 40 deg to the right
+/// side. Every fault end and crossing is a corner below 60 deg on a segment between two faces
+/// (8 caps); 9 faces, each with a region point whose attribute is its layer (1, 2, 3 from the
+/// bottom), so a triangle's attribute is the layer its centroid's y lies in.
+inline pslg faulted_layers() {
+  pslg g;
+  const double run1 = 1 / std::tan(std::numbers::pi / 6),
+               run2 = 1 / std::tan(2 * std::numbers::pi / 9);
+  const auto f1 = [&](double y) { return point{1 + run1 * y, y}; };
+  const auto f2 = [&](double y) { return point{6 + run2 * y, y}; };
+  const double y2r = 6 / run2; // where the second fault meets the right side
+  const std::vector<point> outer = {{0, 0},    f1(0),   f2(0), {12, 0}, {12, 2}, {12, 4},
+                                    {12, y2r}, {12, 6}, f1(6), {0, 6},  {0, 4},  {0, 2}};
+  g.add_loop(outer, 1);                                               // vertices 0..11
+  const index_t x12 = g.add_vertex(f1(2)), x22 = g.add_vertex(f2(2)); // 12, 13
+  const index_t x14 = g.add_vertex(f1(4)), x24 = g.add_vertex(f2(4)); // 14, 15
+  for (const auto& [a, b] : std::vector<std::pair<index_t, index_t>>{
+           {11, x12}, {x12, x22}, {x22, 4}, {10, x14}, {x14, x24}, {x24, 5}})
+    g.add_segment(a, b, 2); // the layer interfaces
+  for (const auto& [a, b] : std::vector<std::pair<index_t, index_t>>{
+           {1, x12}, {x12, x14}, {x14, 8}, {2, x22}, {x22, x24}, {x24, 6}})
+    g.add_segment(a, b, 3); // the faults
+  const point seeds[] = {{1.2, 1}, {5, 1}, {10, 1},     {3, 3},     {8, 3},
+                         {11, 3},  {3, 5}, {11.5, 5.8}, {11.6, 4.3}};
+  for (int r = 0; r < 9; ++r)
+    g.regions.push_back({seeds[r], static_cast<double>(1 + r / 3), -1.0});
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
 } // namespace pdd::test

@@ -118,6 +118,7 @@ std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
           {"general-pinched-sectors", pdd::test::pinched_sectors()},
           {"general-pinched-random", pdd::test::random_pinched(3)},
           {"general-pinched-cracks", pdd::test::random_pinched(4, 0.6)},
+          {"general-faulted", pdd::test::faulted_layers()},
           {"general-t-junctions", pdd::test::t_junction_grid()},
           {"general-combined", pdd::test::combined_domain(0.5)},
           {"general-random-1", pdd::test::random_arrangement(1)},

@@ -473,6 +473,37 @@ TEST(GeneralPslg, SmallAnglesBetweenFacesGetCapsAndAreDecoupled) {
   }
 }
 
+TEST(GeneralPslg, FaultedLayersGetCapsAreDecoupledAndKeepTheirAttributes) {
+  // three layers cut by two thrust faults (30 and 40 deg): 8 caps; Triangle 1.6
+  // -pq20.7a0.01 on the same .poly: 11139 triangles
+  const pslg d = pdd::test::faulted_layers();
+  const pdd::face_decoupling_report faces = pdd::face_decoupling(d);
+  EXPECT_EQ(faces.faces, 9u);
+  EXPECT_EQ(faces.caps.size(), 8u);
+  for (const std::size_t n : {std::size_t{2}, std::size_t{16}, std::size_t{64}}) {
+    const std::string at = "faulted, N = " + std::to_string(n);
+    pdd::generate_options o = options(0.01, 2);
+    o.subdomains = n;
+    const pdd::generate_result r = pdd::generate(d, o);
+    EXPECT_GE(r.statistics.subdomains, std::max<std::size_t>(n, 17)) << at; // 9 faces, 8 caps
+    EXPECT_EQ(r.statistics.interface_splits, 0u) << at;
+    expect_verified(r.mesh, d, 0.01, at);
+    expect_segments_kept_once(r.mesh, d, at);
+    expect_subdomains_in_one_face(r.mesh, d, at, true);
+    if (n <= 16) expect_close_to_triangle(r.mesh.triangles.size(), 11139, at);
+    const std::vector<double> attributes = pdd::region_attributes(d, r.mesh);
+    ASSERT_EQ(attributes.size(), r.mesh.triangles.size()) << at;
+    for (std::size_t t = 0; t < attributes.size(); ++t) {
+      const auto& tri = r.mesh.triangles[t];
+      const double y =
+          (r.mesh.vertices[tri[0]].y + r.mesh.vertices[tri[1]].y + r.mesh.vertices[tri[2]].y) / 3;
+      ASSERT_EQ(attributes[t], 1 + std::floor(y / 2)) << at << ": triangle " << t;
+    }
+    o.threads = 1;
+    EXPECT_TRUE(pdd::test::bitwise_equal(r.mesh, pdd::generate(d, o).mesh)) << at;
+  }
+}
+
 /// Meshes the random domain d (`seed`) with N = n on 2 threads: verified with every
 /// constraint kept once and each subdomain in one region (every `recheck`-th seed bitwise the
 /// same on 1 thread), or refused with a decomposition_error naming one of `reasons`. Returns
