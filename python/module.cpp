@@ -111,11 +111,11 @@ py::dict statistics_dict(const generate_statistics& s, const mesh_statistics& q)
       "subdomains"_a = s.subdomains, "threads"_a = s.threads, "triangles"_a = q.triangles,
       "vertices"_a = q.vertices, "estimated_triangles"_a = s.estimated_triangles, "k"_a = s.k,
       "split_points"_a = s.split_points, "interface_splits"_a = s.interface_splits,
+      "chord_splits"_a = s.decomposition.chord_splits,
       "shielded_triangles"_a = s.shielded_triangles,
       "monolithic_fallback"_a = s.monolithic_fallback, "plan_reason"_a = s.plan_reason,
-      "min_angle_deg"_a = q.min_angle_deg,
-      "max_angle_deg"_a = q.max_angle_deg, "max_ratio"_a = q.max_ratio, "max_area"_a = q.max_area,
-      "area"_a = q.area, "timings"_a = t);
+      "min_angle_deg"_a = q.min_angle_deg, "max_angle_deg"_a = q.max_angle_deg,
+      "max_ratio"_a = q.max_ratio, "max_area"_a = q.max_area, "area"_a = q.area, "timings"_a = t);
 }
 
 /// The whole domain meshed by the kernel under a sizing field, small angles shielded first

@@ -113,6 +113,7 @@ nlohmann::json stats_json(const cli_options& o, const decompose_run& r) {
   j["area_sum"] = r.check.area_sum;
   j["splits"] = r.st.splits;
   j["repairs"] = r.st.repairs;
+  j["chord_splits"] = r.st.chord_splits;
   j["smoothing_moves"] = r.st.smoothing_moves;
   j["valid"] = r.check.ok();
   j["time_s"] = r.st.time_s;

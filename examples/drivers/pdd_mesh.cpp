@@ -285,6 +285,7 @@ void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) 
   j["k"] = gs.k;
   j["split_points"] = gs.split_points;
   j["interface_splits"] = gs.interface_splits;
+  j["chord_splits"] = gs.decomposition.chord_splits; // MADD splits beside dense features
   j["remeshed_subdomains"] = gs.remeshed_subdomains;
   j["area_domain"] = r.props.area;
   j["min_input_angle_deg"] = r.props.min_angle_deg;

@@ -256,3 +256,15 @@ def test_general_pslg_internal_dangling_and_isolated():
     at = {tuple(p): i for i, p in enumerate(r["vertices"].tolist())}
     assert at[tuple(v[6])] in set(r["triangles"].ravel().tolist())
     assert {at[tuple(v[4])], at[tuple(v[5])]} <= set(r["segments"].ravel().tolist())
+
+
+def test_dense_features_are_split_by_a_chord():
+    # a spiral of dangling segments fills the middle of a 4 x 4 square: no medial-axis
+    # separator clears it, so MADD cuts beside it with a straight chord
+    v = np.array([[0, 0], [4, 0], [4, 4], [0, 4], [1, 1], [3, 1], [3, 3], [1, 3]], float)
+    s = np.array([[0, 1], [1, 2], [2, 3], [3, 0], [3, 4], [4, 5], [5, 6], [6, 7]])
+    r = pdd.mesh(v, s, max_area=0.01, subdomains=2)
+    assert r["statistics"]["subdomains"] == 2
+    assert r["statistics"]["chord_splits"] == 1
+    assert r["statistics"]["interface_splits"] == 0
+    assert abs(areas(r["vertices"], r["triangles"]).sum() - 16.0) < 1e-12

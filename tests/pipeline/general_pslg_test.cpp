@@ -11,7 +11,9 @@
 // are decoupled.
 // Dangling segments and isolated vertices are kept inside subdomains: no separator comes near
 // them (the shared files triangle_face.poly and cgal_clusters.poly, own domains, random
-// arrangements; N in {2, 16, 64}, 1 and 2 threads).
+// arrangements; N in {2, 16, 64}, 1 and 2 threads). Where they fill the middle of a face and
+// block every medial-axis separator, MADD cuts beside them with straight chords.
+#include "dense_features.hpp"
 #include "general_domains.hpp"
 #include "mesh_compare.hpp"
 #include "test_support.hpp"
@@ -859,6 +861,71 @@ TEST(GeneralPslg, RandomMapsWithFeaturesAreDecoupledOrRefused) {
   EXPECT_GE(decoupled, 190u);              // 200 of 200 here (133 before caps)
   EXPECT_GE(features, 1000u);              // 1570 free ends and wells decoupled
   EXPECT_GE(validated, 100u) << validated; // their decompositions (at h) validated
+}
+
+TEST(GeneralPslg, DenseFeaturesAreSplitByChordsBesideThem) {
+  // A spiral of dangling segments in the middle of a square, joined to a corner at 18.4 deg
+  // (found by the fuzz target): every medial-axis separator passes near it, and N > 1 was
+  // refused ("no acceptable separator"). Straight chords beside it split the square: at
+  // N = 2, 16 and 64 verified, every constraint kept once, bitwise the same on 1 and 2
+  // threads, near Triangle's count.
+  const pslg d = pdd::test::spiral_from_a_corner();
+  for (const std::size_t n : {2u, 16u, 64u}) {
+    const std::string at = "N = " + std::to_string(n);
+    const pdd::generate_result one = mesh_on_one_and_two_threads(d, 0.002, n);
+    EXPECT_EQ(one.statistics.subdomains, n) << at;
+    EXPECT_GE(one.statistics.decomposition.chord_splits, 1u) << at;
+    EXPECT_EQ(one.statistics.interface_splits, 0u) << at;
+    expect_verified(one.mesh, d, 0.002, at);
+    expect_segments_kept_once(one.mesh, d, at);
+    if (n < 64) expect_close_to_triangle(one.mesh.triangles.size(), 12513, at);
+    EXPECT_TRUE(expect_inner_constraints_kept(d, n, at));
+  }
+  // The chord's own checks: at N = 2 one chord, at >= 60 deg to the sides it joins
+  pdd::decomposition_statistics st;
+  const pdd::decomposition dec = pdd::decompose(d, {.subdomains = 2}, {}, &st);
+  EXPECT_EQ(st.chord_splits, 1u);
+  EXPECT_GE(st.min_separator_angle_deg, 60.0);
+  EXPECT_TRUE(pdd::validate_decomposition(dec, d).ok());
+}
+
+TEST(GeneralPslg, RandomDenseFeaturesAreDecoupled) {
+  // 60 random rectangles whose middle a spiral of cracks (some joined to a corner), a field of
+  // wells or a comb of cracks fills, N = 2 and 8 on 2 threads: every one decoupled, verified
+  // with every constraint kept once (every fifth bitwise the same on 1 thread), and most need
+  // a chord beside the features
+  std::size_t chords = 0;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+    const pslg d = pdd::test::random_dense_features(seed);
+    for (const std::size_t n : {2u, 8u})
+      EXPECT_TRUE(expect_decoupled_or_refused(d, n, seed, 5, {}));
+    pdd::decomposition_statistics st;
+    pdd::decompose(d, {.subdomains = 8}, {}, &st);
+    chords += st.chord_splits > 0 ? 1 : 0;
+    EXPECT_TRUE(expect_inner_constraints_kept(d, 8, "seed " + std::to_string(seed)));
+  }
+  EXPECT_GE(chords, 25u) << chords; // 29 of 60 need a chord somewhere
+}
+
+TEST(GeneralPslg, FeaturesWithNoChordBesideThemRefuseAnExplicitN) {
+  // A cross of dangling segments to 0.05 from each side: every chord would be a sliver beside
+  // an arm's end (k, and the mesh, far finer than the square needs), so an explicit N = 2 is
+  // refused naming the subdomain and why; automatic N meshes the square whole, verified
+  const pslg d = pdd::test::cross_to_the_sides();
+  pdd::generate_options o = options(0.01, 2);
+  o.subdomains = 2;
+  try {
+    pdd::generate(d, o);
+    ADD_FAILURE() << "expected a decomposition_error";
+  } catch (const pdd::decomposition_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("subdomain 0"), std::string::npos) << what;
+    EXPECT_NE(what.find("no straight chord clear of the features"), std::string::npos) << what;
+  }
+  o.subdomains = 0;
+  const pdd::generate_result r = pdd::generate(d, o);
+  EXPECT_EQ(r.statistics.subdomains, 1u);
+  expect_verified(r.mesh, d, 0.01, "automatic N");
 }
 
 } // namespace

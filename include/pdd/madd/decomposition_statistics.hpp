@@ -33,6 +33,9 @@ struct decomposition_statistics {
   /// Splits where algorithm 1 found no separator at any level and algorithm 2 was used
   /// (exactly symmetric boundaries have no junction triangles).
   std::size_t algorithm_fallbacks = 0;
+  /// Splits of a region with features (a general PSLG) where no medial-axis separator cleared
+  /// the features and a straight chord beside them was used.
+  std::size_t chord_splits = 0;
   /// Larger child area / parent area: mean and maximum over the splits.
   double mean_split_fraction = 0.0;
   double max_split_fraction = 0.0;

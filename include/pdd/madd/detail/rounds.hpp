@@ -197,6 +197,7 @@ inline void record_split(const madd_split_result& r, decomposition_statistics& s
   st.repairs += r.repairs;
   st.smoothing_moves += r.smoothing_moves;
   st.algorithm_fallbacks += r.fallback ? 1 : 0;
+  st.chord_splits += r.chord ? 1 : 0;
   st.boundary_points += r.z_points;
   st.mean_split_fraction += r.max_fraction;
   st.max_split_fraction = std::max(st.max_split_fraction, r.max_fraction);

@@ -16,9 +16,11 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/detail/children.hpp>
+#include <pdd/madd/detail/chord_split.hpp>
 #include <pdd/madd/detail/features.hpp>
 #include <pdd/madd/detail/graph.hpp>
 #include <pdd/madd/detail/region.hpp>
+#include <pdd/madd/detail/split_result.hpp>
 #include <pdd/madd/detail/triangulation.hpp>
 #include <pdd/partition/connectivity.hpp>
 
@@ -31,39 +33,6 @@
 #include <vector>
 
 namespace pdd::detail {
-
-/// Options of one split.
-struct madd_split_options {
-  madd_graph_options graph;
-  double target_length = 1.0; ///< h at refinement level 0
-  int max_levels = 8;         ///< levels h, h/2, h/4, ...
-  int extra_levels = 2;       ///< levels tried after a first valid but unbalanced split
-  int max_encroachment_depth = 8;
-  double imbalance_bound = 0.75;   ///< L_b: largest child area / region area accepted at once
-  double max_part_fraction = 0.55; ///< given to the partitioner
-  int max_repairs = 64;
-  std::uint64_t seed = 1;
-  double feature_clearance = 0.0; ///< madd_options::feature_clearance
-};
-
-/// The result of one split.
-struct madd_split_result {
-  bool ok = false;
-  std::array<madd_region, 2> children;
-  std::vector<madd_edge_split> kept; ///< refinement vertices that separators end at
-  int level = -1;
-  double separator_length = 0.0;
-  double min_angle = 180.0;  ///< smallest angle the separator forms (degrees)
-  double max_fraction = 1.0; ///< largest child area / region area
-  std::size_t z_points = 0;  ///< |Z| at the level used
-  std::size_t junctions = 0;
-  std::size_t graph_nodes = 0;
-  std::size_t repairs = 0;
-  std::size_t smoothing_moves = 0;
-  std::size_t levels_tried = 0;
-  bool fallback = false; ///< algorithm 1 found nothing, algorithm 2 split the region
-  std::string failure;   ///< why there is no split (when !ok)
-};
 
 /// Part of every cell for a part of every node.
 inline std::vector<std::uint8_t> cell_parts(const madd_graph& g,
@@ -276,9 +245,10 @@ template <GraphPartitioner P>
 madd_split_result split_at_level(const madd_region& r, const madd_split_options& o,
                                  const P& partitioner, int level) {
   const double h = std::ldexp(o.target_length, -level);
+  madd_split_result cur;
+  cur.level = level;
   const madd_triangulation tr = triangulate_region(r, h, o.max_encroachment_depth);
   madd_graph g = build_madd_graph(tr, o.graph);
-  madd_split_result cur;
   if (o.graph.algorithm == 1 && g.junctions == 0) {
     // No junction triangle at all (an exactly symmetric boundary, e.g. a refined square,
     // has only right-angled Delaunay triangles at every level): use algorithm 2's
@@ -290,7 +260,6 @@ madd_split_result split_at_level(const madd_region& r, const madd_split_options&
   }
   // no separator within max(h, clearance) of a feature
   forbid_cuts_near_features(r, tr, g, std::max(h, o.feature_clearance));
-  cur.level = level;
   cur.z_points = tr.z.size();
   cur.junctions = g.junctions;
   if (g.nodes < 2) {
@@ -310,12 +279,11 @@ madd_split_result split_at_level(const madd_region& r, const madd_split_options&
   return cur;
 }
 
-/// Splits a region in two (one MADD step with dynamic refinement). Deterministic: a pure
-/// function of (r, o) for a deterministic partitioner. Thread-safe when the partitioner is.
-/// Never throws for a region that cannot be split: ok is false and failure says why.
+/// The medial-axis split of a region (one MADD step with dynamic refinement, algorithm 2 when
+/// algorithm 1 finds nothing).
 template <GraphPartitioner P>
-madd_split_result split_region(const madd_region& r, const madd_split_options& o,
-                               const P& partitioner) {
+madd_split_result medial_axis_split(const madd_region& r, const madd_split_options& o,
+                                    const P& partitioner) {
   madd_split_result best;
   best.failure = "no refinement level was tried";
   int stop_level = o.max_levels;
@@ -337,13 +305,28 @@ madd_split_result split_region(const madd_region& r, const madd_split_options& o
     // second algorithm's Delaunay-edge separators split such regions.
     madd_split_options o2 = o;
     o2.graph.algorithm = 2;
-    madd_split_result r2 = split_region(r, o2, partitioner);
+    madd_split_result r2 = medial_axis_split(r, o2, partitioner);
     r2.levels_tried += best.levels_tried;
     r2.fallback = true;
     if (!r2.ok) r2.failure = best.failure + "; algorithm 2: " + r2.failure;
     return r2;
   }
   return best;
+}
+
+/// Splits a region in two: the medial-axis split, else (features block every medial-axis
+/// separator) the straight-chord split of chord_split.hpp. Deterministic: a pure function of
+/// (r, o) for a deterministic partitioner. Thread-safe when the partitioner is. Never throws
+/// for a region that cannot be split: ok is false and failure says why.
+template <GraphPartitioner P>
+madd_split_result split_region(const madd_region& r, const madd_split_options& o,
+                               const P& partitioner) {
+  madd_split_result res = medial_axis_split(r, o, partitioner);
+  if (res.ok || r.features.empty()) return res;
+  madd_split_result chord = chord_split(r, o);
+  chord.levels_tried += res.levels_tried;
+  if (!chord.ok) chord.failure = res.failure + "; " + chord.failure;
+  return chord;
 }
 
 } // namespace pdd::detail
