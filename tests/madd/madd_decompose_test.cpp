@@ -270,6 +270,22 @@ TEST(MaddDecompose, UnsplittableGivesError) {
   expect_valid(d, square(), 2);
 }
 
+TEST(MaddDecompose, SliverRegionIsRefusedNotExhaustingMemory) {
+  // A triangle of area ~1e-17 with sides of length ~1 (a fuzz input): the boundary spacing
+  // 4 A / (P r) is ~1e-18, so Z would need 2^30 points per edge; the split is refused, naming
+  // the subdomain and why (before: std::bad_alloc)
+  pdd::pslg g;
+  g.add_loop(std::vector<point>{{0, 0}, {1, 1}, {0.7071067811865476, 0.7071067811865475}}, 1);
+  try {
+    pdd::decompose(g, {.subdomains = 2});
+    ADD_FAILURE() << "expected decomposition_error";
+  } catch (const pdd::decomposition_error& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("subdomain 0"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("points at spacing"), std::string::npos) << msg;
+  }
+}
+
 TEST(MaddDecompose, SharedDataFiles) {
   const auto files = pdd::test::shared_poly_files();
   if (files.empty()) GTEST_SKIP() << "no shared data";

@@ -245,6 +245,7 @@ inline madd_split_result chord_split(const madd_region& r, const madd_split_opti
   std::vector<madd_zvertex> best_z;
   for (int level = 0; level < o.max_levels; ++level) {
     const double h = std::ldexp(o.target_length, -level);
+    if (z_point_count(r, h) > max_z_points) break; // finer levels need even more
     std::vector<madd_zvertex> z;
     build_z(r, h, z);
     ++best.levels_tried;

@@ -247,6 +247,10 @@ madd_split_result split_at_level(const madd_region& r, const madd_split_options&
   const double h = std::ldexp(o.target_length, -level);
   madd_split_result cur;
   cur.level = level;
+  if (z_point_count(r, h) > max_z_points) {
+    cur.failure = too_many_z_points(h);
+    return cur;
+  }
   const madd_triangulation tr = triangulate_region(r, h, o.max_encroachment_depth);
   madd_graph g = build_madd_graph(tr, o.graph);
   if (o.graph.algorithm == 1 && g.junctions == 0) {

@@ -27,6 +27,8 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <sstream>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -120,6 +122,38 @@ inline void refine_region_edge(const madd_region& r, std::uint32_t l, std::uint3
   }
 }
 
+/// The bisection depth of an edge of length len at target length h: 2^depth pieces of length
+/// <= h (at most 30).
+inline int refinement_depth(double len, double h) noexcept {
+  int depth = 0;
+  while (depth < 30 && len > h * std::ldexp(1.0, depth))
+    ++depth;
+  return depth;
+}
+
+/// The most points Z may have: a region whose boundary would need more at the spacing asked
+/// for (a sliver: its area, and so h, is tiny against its perimeter) is not split at that
+/// spacing rather than exhausting memory.
+inline constexpr double max_z_points = 4194304.0;
+
+/// Why a split at spacing h is not tried: Z would exceed max_z_points.
+inline std::string too_many_z_points(double h) {
+  std::ostringstream s;
+  s << "its boundary would need more than " << std::llround(max_z_points) << " points at spacing "
+    << h << " (a sliver: tiny area for its perimeter)";
+  return s.str();
+}
+
+/// |Z| that build_z(r, h) would make.
+inline double z_point_count(const madd_region& r, double h) noexcept {
+  double n = 0.0;
+  for (const madd_loop& lp : r.loops)
+    for (std::size_t e = 0; e < lp.size(); ++e)
+      n += std::ldexp(1.0,
+                      refinement_depth(distance(lp.points[e], lp.points[(e + 1) % lp.size()]), h));
+  return n;
+}
+
 /// Static refinement (4.1): Z for a region, every region edge in 2^d pieces of length <= h,
 /// linked along its loops.
 inline void build_z(const madd_region& r, double h, std::vector<madd_zvertex>& z) {
@@ -138,11 +172,7 @@ inline void build_z(const madd_region& r, double h, std::vector<madd_zvertex>& z
       v.far_prev = lp.points[(e + lp.size() - 1) % lp.size()];
       v.far_next = b;
       z.push_back(v);
-      const double len = distance(a, b);
-      int depth = 0;
-      while (depth < 30 && len > h * std::ldexp(1.0, depth))
-        ++depth;
-      refine_region_edge(r, l, e, depth, z);
+      refine_region_edge(r, l, e, refinement_depth(distance(a, b), h), z);
     }
     const auto last = static_cast<std::uint32_t>(z.size());
     for (std::uint32_t i = first; i < last; ++i) {
