@@ -5,7 +5,8 @@
 // decoupled from their faces: an internal constraint, a dangling segment and isolated vertices,
 // an internal boundary, loops touching at pinch vertices (random small sectors too), a T-junction
 // grid, a fan of dangling segments at 15 deg, random arrangements and maps,
-// tests/common/general_domains.hpp; one with a 0.2 deg angle the kernel refuses).
+// tests/common/general_domains.hpp; features filling a face's middle, which MADD splits beside
+// with chords, tests/common/dense_features.hpp; one with a 0.2 deg angle the kernel refuses).
 // The bundled examples/data files are the other seeds.
 //
 //   pdd_fuzz_seeds DIR     writes DIR/<name>.poly (DIR is created)
@@ -13,6 +14,7 @@
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/io/poly.hpp>
 
+#include "dense_features.hpp"
 #include "general_domains.hpp"
 #include "random_domains.hpp"
 
@@ -119,6 +121,9 @@ std::vector<std::pair<std::string, pdd::pslg>> general_seeds() {
           {"general-pinched-random", pdd::test::random_pinched(3)},
           {"general-pinched-cracks", pdd::test::random_pinched(4, 0.6)},
           {"general-faulted", pdd::test::faulted_layers()},
+          {"general-dense-spiral", pdd::test::spiral_from_a_corner()},
+          {"general-dense-wells", pdd::test::random_dense_features(4)},
+          {"general-dense-comb", pdd::test::random_dense_features(5)},
           {"general-t-junctions", pdd::test::t_junction_grid()},
           {"general-combined", pdd::test::combined_domain(0.5)},
           {"general-random-1", pdd::test::random_arrangement(1)},
