@@ -217,4 +217,47 @@ TEST(MaddStart, CapsAroundSmallAnglesBetweenFacesAreKeptWholeWithChordsAtWideAng
   }
 }
 
+TEST(MaddStart, ACapIsNeverSplitEvenWhenItsAreaIsAboveTheBound) {
+  // A square cut by an oblique chord, with a dangling segment from the chord's lower end at
+  // 20 deg beside it: a cap around that end (its pieces of the two segments inside).
+  // Decomposed by area with a bound below the cap's area, the regions around it are split
+  // while the cap stays one subdomain of its own area. (MADD by area leaves a region it cannot
+  // split above the bound without an error; that is not what this checks.)
+  pslg g;
+  g.add_loop(std::vector<pdd::point>{{0, 0}, {1.5, 0}, {4, 0}, {4, 4}, {2.5, 4}, {0, 4}});
+  g.add_segment(1, 4);
+  const double turn = std::atan2(4.0, 1.0) + 20.0 * std::numbers::pi / 180.0;
+  g.add_segment(1, g.add_vertex({1.5 + std::cos(turn), std::sin(turn)}));
+  g.rule = pdd::domain_rule::triangle;
+  const pdd::madd_start start(g);
+  const auto caps = pdd::face_decoupling(g).caps;
+  ASSERT_EQ(caps.size(), 1u);
+  const auto [apex, radius] = caps[0];
+  double cap_area = 0.0;
+  for (const pdd::detail::madd_region& region : start.regions())
+    if (region.keep_whole) cap_area = region.area;
+  ASSERT_GT(cap_area, 0.0);
+  const pdd::decomposition d =
+      pdd::decompose(start, pdd::madd_options{.max_subdomain_area = 0.4 * cap_area});
+  const pdd::decomposition_report rep = pdd::validate_decomposition(d, g);
+  EXPECT_TRUE(rep.ok()) << (rep.problems.empty() ? "" : rep.problems.front());
+  EXPECT_GT(d.subdomains.size(), 16u);
+  std::vector<double> inside_circle; // the areas of the subdomains inside the cap's circle
+  for (const pdd::subdomain& sd : d.subdomains) {
+    bool inside = true;
+    double area = 0.0;
+    for (const auto& loop : sd.loops) {
+      std::vector<pdd::point> pts;
+      for (const pdd::index_t v : loop) {
+        pts.push_back(d.vertices[v]);
+        inside = inside && pdd::detail::distance(d.vertices[v], apex) <= radius * (1 + 1e-12);
+      }
+      area += pdd::detail::polygon_signed_area(pts);
+    }
+    if (inside) inside_circle.push_back(area);
+  }
+  ASSERT_EQ(inside_circle.size(), 1u);
+  EXPECT_NEAR(inside_circle[0], cap_area, 1e-12 * cap_area);
+}
+
 } // namespace madd_start_test
