@@ -225,6 +225,13 @@ inline double check_subdomain_edges(const decomposition& d, std::size_t s,
   return area;
 }
 
+/// True when p lies farther than 1e-9 |ab| from the line through the input segment ab (split
+/// points are rounded, so a piece's ends lie on its segment only up to rounding).
+inline bool off_segment(point a, point b, point p) noexcept {
+  const double len = distance(a, b);
+  return std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / len > 1e-9 * len;
+}
+
 /// An external edge: in one subdomain, on the input segment it names, with its marker; adds
 /// its length to `covered`.
 inline void check_external_edge(const std::pair<index_t, index_t>& key,
@@ -245,11 +252,7 @@ inline void check_external_edge(const std::pair<index_t, index_t>& key,
   }
   const segment& sg = g.segments[x.tag.id];
   const point a = g.vertices[sg.a], b = g.vertices[sg.b];
-  const double len = distance(a, b);
-  auto off = [&](point p) {
-    return std::abs((b.x - a.x) * (p.y - a.y) - (b.y - a.y) * (p.x - a.x)) / len;
-  };
-  if (off(d.vertices[key.first]) > 1e-9 * len || off(d.vertices[key.second]) > 1e-9 * len)
+  if (off_segment(a, b, d.vertices[key.first]) || off_segment(a, b, d.vertices[key.second]))
     pr.push_back(ename + " does not lie on input segment " + std::to_string(x.tag.id));
   if (x.tag.marker != sg.marker)
     pr.push_back(ename + " has marker " + std::to_string(x.tag.marker) + ", its segment " +
@@ -330,11 +333,7 @@ inline void check_inner_constraints(const decomposition& d, const pslg& g,
       for (const index_t v : {c.a, c.b})
         if (on_interface(v) && input_end(d.vertices[v]))
           pr.push_back(at + " touches a separator at vertex " + std::to_string(v));
-      const double len = distance(pa, pb);
-      const auto off = [&](point p) {
-        return std::abs((pb.x - pa.x) * (p.y - pa.y) - (pb.y - pa.y) * (p.x - pa.x)) / len;
-      };
-      if (!(input_end(qa) || input_end(qb)) || off(qa) > 1e-9 * len || off(qb) > 1e-9 * len ||
+      if (!(input_end(qa) || input_end(qb)) || off_segment(pa, pb, qa) || off_segment(pa, pb, qb) ||
           c.marker != sg.marker)
         pr.push_back(at + " is not (a piece from an end of) input segment " +
                      std::to_string(c.segment));
