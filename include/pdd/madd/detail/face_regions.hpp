@@ -151,10 +151,12 @@ inline std::string caps_text(const pslg& g, std::size_t count, index_t first) {
 }
 
 /// The faces of g (`faces`), joined where `groups` says, as MADD regions into out.regions
-/// (in order of each group's representative face), with their features. Returns the joins
-/// that small angles between the regions ask for; out.regions is left empty if there are any.
+/// (in order of each group's representative face, which region_face gets), with their
+/// features. Returns the joins that small angles between the regions ask for; out.regions is
+/// left empty if there are any.
 inline std::vector<face_join> regions_of_faces(const pslg& g, const domain_faces& faces,
-                                               union_find& groups, face_region_set& out) {
+                                               union_find& groups, face_region_set& out,
+                                               std::vector<index_t>* region_face = nullptr) {
   const auto segs = segment_lookup(g);
   std::vector<domain_triangle> tris = faces.triangles();
   std::vector<char> in_domain(faces.face_count(), 0);
@@ -174,6 +176,7 @@ inline std::vector<face_join> regions_of_faces(const pslg& g, const domain_faces
   for (const face_loops& f : loops_of) {
     out.regions.push_back(face_region(g, f.loops, segs));
     out.regions.back().features = std::move(features[f.face]);
+    if (region_face) region_face->push_back(f.face);
   }
   return joins;
 }
@@ -200,16 +203,12 @@ inline std::vector<face_join> capped_regions(const capped_domain& capped, face_r
     for (const point& p : samples)
       groups.unite(cap_face.back(), face_at(p));
   }
-  std::vector<face_join> left = regions_of_faces(capped.g, faces, groups, out);
-  if (!left.empty()) return left;
   std::vector<index_t> representative; // of each region's group, in region order
-  for (const domain_triangle& t : faces.triangles())
-    representative.push_back(groups.find(t.face));
-  std::sort(representative.begin(), representative.end());
-  representative.erase(std::unique(representative.begin(), representative.end()),
-                       representative.end());
+  std::vector<face_join> left = regions_of_faces(capped.g, faces, groups, out, &representative);
+  if (!left.empty()) return left;
   for (const index_t f : cap_face) {
-    const auto at = std::lower_bound(representative.begin(), representative.end(), groups.find(f));
+    const auto at = std::find(representative.begin(), representative.end(), groups.find(f));
+    PDD_ASSERT(at != representative.end());
     out.regions[static_cast<std::size_t>(at - representative.begin())].keep_whole = true;
   }
   for (madd_region& r : out.regions) {
