@@ -162,10 +162,14 @@ inline std::array<madd_region, 2> chord_cut(const madd_region& r, const madd_zve
   ch[1].loops.push_back(chord_side(r.loops[0], w, u));
   const std::vector<epick::Point_2> first = cgal_loop(ch[0].loops[0]);
   for (std::size_t l = 1; l < r.loops.size(); ++l) {
-    const point p = r.loops[l].points[0];
-    const bool in_first = CGAL::bounded_side_2(first.begin(), first.end(), epick::Point_2(p.x, p.y),
-                                               epick()) == CGAL::ON_BOUNDED_SIDE;
-    ch[in_first ? 0 : 1].loops.push_back(r.loops[l]);
+    // the side of the hole's first vertex off the first child's outer loop (a hole may touch
+    // the outer loop at a pinch vertex; the chord keeps its clearance from every vertex)
+    CGAL::Bounded_side side = CGAL::ON_BOUNDARY;
+    for (std::size_t i = 0; i < r.loops[l].size() && side == CGAL::ON_BOUNDARY; ++i) {
+      const point p = r.loops[l].points[i];
+      side = CGAL::bounded_side_2(first.begin(), first.end(), epick::Point_2(p.x, p.y), epick());
+    }
+    ch[side == CGAL::ON_BOUNDED_SIDE ? 0 : 1].loops.push_back(r.loops[l]);
   }
   for (madd_region& c : ch)
     c.area = region_area(c);
