@@ -15,17 +15,20 @@
 
 namespace pdd {
 
-/// Writes a file atomically: `writer(os)` writes the whole content to a temporary file in the
-/// same directory as `path`; the stream is flushed, closed and checked, and only then renamed
-/// onto `path` (std::filesystem::rename, atomic on POSIX file systems). An existing file at
-/// `path` is replaced only on success.
+/// Writes a file atomically and durably: `writer(os)` writes the whole content to a temporary
+/// file in the same directory as `path`; the stream is flushed, closed and checked, the file
+/// synced to disk (fsync), and only then renamed onto `path` (std::filesystem::rename, atomic on
+/// POSIX file systems), and the directory synced: a run killed at any moment, or a power loss,
+/// leaves either no file (or the old one) or the complete new one under `path`. An existing
+/// file at `path` is replaced only on success.
 ///
 /// \tparam Writer callable as `writer(std::ostream&)`; it may throw.
 /// \pre `path` names a file (not a directory) in an existing directory.
 /// \throws pdd::error naming `path` when the temporary file cannot be created, a write fails
-///   (stream state bad/fail), or the rename fails; a pdd::error thrown by `writer` is rethrown
-///   unchanged and any other std::exception is rethrown as pdd::error with the path. In every
-///   failure case the temporary file is removed and `path` is untouched.
+///   (stream state bad/fail, e.g. a full file system), the sync or the rename fails; a pdd::error
+///   thrown by `writer` is rethrown unchanged and any other std::exception is rethrown as
+///   pdd::error with the path. In every failure case the temporary file is removed and `path` is
+///   untouched.
 /// Complexity: linear in the bytes written. Thread-safety: safe for distinct paths; concurrent
 ///   writes of the same path leave one complete version.
 template <class Writer>

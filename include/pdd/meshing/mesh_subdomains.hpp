@@ -32,9 +32,11 @@ namespace pdd {
 /// delivered are delivered again, replacing their mesh), up to options.max_repairs rounds.
 /// \tparam M a DelaunayMesher. \tparam E an Executor. \tparam S a MeshSink.
 /// \throws pdd::meshing_error(id, ...) for the smallest failing subdomain id when the kernel
-/// (or the sink) throws; pdd::decoupling_error naming subdomains and segments when repairs run
-/// out. After an exception, finish() has not been called and the sink holds partial results.
-/// Complexity: the kernel on every subdomain, plus linear checks.
+/// (or the sink, with a meshing_error or an exception that is no pdd::error) throws; a sink's
+/// other pdd::error (an output it cannot write) as the sink threw it; pdd::decoupling_error naming
+/// subdomains and segments when repairs run out. After an exception, finish() has not been called
+/// and the sink holds partial results. Complexity: the kernel on every subdomain, plus linear
+/// checks.
 template <DelaunayMesher M, Executor E, MeshSink S>
 meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_options& options,
                                    const M& mesher, const E& executor, S& sink) {

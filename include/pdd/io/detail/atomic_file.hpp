@@ -15,6 +15,9 @@
 #include <string>
 #include <system_error>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 namespace pdd::detail {
 
 /// A fresh name in the directory of `target`: ".<name>.pdd-tmp-<16 hex digits>". The digits mix a
@@ -63,6 +66,29 @@ inline void finish_temporary(std::ofstream& out, const std::string& where) {
   if (out.fail()) throw error(where + "closing the file failed");
 }
 
+/// fsync of the file or directory at p (POSIX), so that what was written survives a power loss
+/// or a crash of the system: a file's data before it is renamed into place, a directory's entry
+/// after. A directory whose file system cannot sync directories (EINVAL) is accepted.
+/// \throws pdd::error starting with `where` when p cannot be opened or the sync fails (EIO,
+///   ENOSPC on delayed allocation).
+inline void sync_to_disk(const std::filesystem::path& p, bool directory, const std::string& where) {
+  const int fd = ::open(p.c_str(), O_RDONLY | O_CLOEXEC | (directory ? O_DIRECTORY : 0));
+  if (fd < 0)
+    throw error(where + "cannot open " + (directory ? "its directory" : "the written file") +
+                " to sync it (" + errno_message(errno) + ")");
+  const int rc = ::fsync(fd);
+  const int e = errno;
+  ::close(fd);
+  if (rc != 0 && !(directory && e == EINVAL))
+    throw error(where + "syncing " + (directory ? "its directory" : "the file") +
+                " to disk failed (" + errno_message(e) + ")");
+}
+
+/// The directory that holds path (".", for a bare file name).
+inline std::filesystem::path directory_of(const std::filesystem::path& path) {
+  return path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+}
+
 /// Closes and removes the temporary file after a failure; never throws.
 inline void discard_temporary(std::ofstream& out, const std::filesystem::path& tmp) noexcept {
   try {
@@ -73,17 +99,26 @@ inline void discard_temporary(std::ofstream& out, const std::filesystem::path& t
   std::filesystem::remove(tmp, ec);
 }
 
-/// Renames the complete temporary file onto path (atomic on POSIX file systems).
-/// \throws pdd::error starting with `where` when the rename fails (the temporary is removed).
+/// Syncs the complete temporary file, renames it onto path (atomic on POSIX file systems) and
+/// syncs the directory, so that after a crash path holds either its old content or the new one,
+/// never an empty or torn file. \throws pdd::error starting with `where` when the sync or the
+/// rename fails (the temporary is removed) or the directory's sync fails (path is complete).
 inline void rename_temporary(const std::filesystem::path& tmp, const std::filesystem::path& path,
                              const std::string& where) {
   std::error_code ec;
+  try {
+    sync_to_disk(tmp, false, where);
+  } catch (const error&) {
+    std::filesystem::remove(tmp, ec);
+    throw;
+  }
   std::filesystem::rename(tmp, path, ec);
   if (ec) {
     std::error_code ignored;
     std::filesystem::remove(tmp, ignored);
     throw error(where + "renaming the temporary file failed (" + ec.message() + ")");
   }
+  sync_to_disk(directory_of(path), true, where);
 }
 
 } // namespace pdd::detail

@@ -35,7 +35,9 @@ public:
   }
 
   /// Meshes subdomain s (pdd::mesh_subdomain) and delivers it, or records the failure.
-  /// \throws pdd::meshing_error(s, ...) for any exception inside (the sink's too).
+  /// \throws pdd::meshing_error(s, ...) for any exception inside, except a pdd::error of the
+  /// sink that is not a meshing_error (an output it cannot write: a full disk, a missing
+  /// directory), which is rethrown as it is: the input and the kernel are not at fault.
   void mesh_one(index_t s) {
     subdomain_meshing r = mesh_subdomain(dd_, s, options_, mesher_);
     subdomain_report& rep = stats.subdomains[s];
@@ -48,6 +50,8 @@ public:
       sink_.consume(s, std::move(r.mesh));
     } catch (const meshing_error& e) {
       rethrow_for_subdomain(e, static_cast<long long>(s));
+    } catch (const error&) {
+      throw; // the sink's own error (its output), named by the sink
     } catch (const std::exception& e) {
       throw meshing_error(s, e.what());
     }
