@@ -1,5 +1,6 @@
 // The `pdd` Python module: pdd.triangulate (the `triangle` package's call, through pdd's
-// Triangle switch parser) and pdd.mesh (keywords, numpy arrays, statistics as a dict).
+// Triangle switch parser), pdd.mesh (keywords, numpy arrays, statistics as a dict) and pdd.verify
+// (pdd::verify with its defaults).
 #include "arrays.hpp"
 #include "sizing.hpp"
 
@@ -8,6 +9,7 @@
 #include <pdd/geometry/validate.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
+#include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/apply_shields.hpp>
 #include <pdd/shielding/shield.hpp>
 #include <pdd/triangle/switches.hpp>
@@ -116,6 +118,44 @@ py::dict statistics_dict(const generate_statistics& s, const mesh_statistics& q)
       "monolithic_fallback"_a = s.monolithic_fallback, "plan_reason"_a = s.plan_reason,
       "min_angle_deg"_a = q.min_angle_deg, "max_angle_deg"_a = q.max_angle_deg,
       "max_ratio"_a = q.max_ratio, "max_area"_a = q.max_area, "area"_a = q.area, "timings"_a = t);
+}
+
+/// pdd.verify(tri, mesh, ...): pdd::verify with its default options (see the docstring below).
+py::dict verify(const py::dict& tri, const py::dict& mesh, double min_angle,
+                const std::optional<double> max_area, std::size_t max_reported) {
+  const pslg g = pslg_from_dict(tri);
+  if (!mesh.contains("vertices") || !mesh.contains("triangles"))
+    throw bad_argument("the mesh dict needs 'vertices' and 'triangles'");
+  triangle_mesh m;
+  m.vertices = points_of(mesh["vertices"], "mesh vertices");
+  if (py::len(mesh["triangles"]) > 0) {
+    const auto t = as_table<long long>(mesh["triangles"], 3, "mesh triangles");
+    for (py::ssize_t i = 0; i < t.shape(0); ++i) {
+      std::array<index_t, 3> tri_ids{};
+      for (py::ssize_t k = 0; k < 3; ++k) // out of range: reported as a malformed triangle
+        tri_ids[k] = t.at(i, k) < 0 || t.at(i, k) > static_cast<long long>(no_index - 1)
+                         ? no_index
+                         : static_cast<index_t>(t.at(i, k));
+      m.triangles.push_back(tri_ids);
+    }
+  }
+  verify_options o;
+  o.criteria.min_angle_deg = min_angle;
+  if (max_area) o.criteria.max_area = *max_area;
+  o.max_reported = max_reported;
+  verification_report r;
+  {
+    py::gil_scoped_release release;
+    r = pdd::verify(m, g, o);
+  }
+  return py::dict(
+      "ok"_a = r.ok(), "delaunay_violations"_a = r.delaunay_violations,
+      "orientation_violations"_a = r.orientation_violations,
+      "missing_segments"_a = r.missing_segments, "duplicate_vertices"_a = r.duplicate_vertices,
+      "missing_vertices"_a = r.missing_vertices, "quality_violations"_a = r.quality_violations,
+      "area_violations"_a = r.area_violations, "nonmanifold_edges"_a = r.nonmanifold_edges,
+      "area_domain"_a = r.area_domain, "area_mesh"_a = r.area_mesh, "area_ok"_a = r.area_ok,
+      "messages"_a = r.messages);
 }
 
 /// The whole domain meshed by the kernel under a sizing field, small angles shielded first
@@ -268,5 +308,18 @@ decoupling method (0: automatic); threads (0: all cores): the arrays are bitwise
 every thread count. Returns a dict of numpy arrays (vertices, triangles, segments,
 segment_markers, vertex_markers, triangle_markers = subdomain ids) and 'statistics'.
 Bad input raises ValueError with pdd's message; the GIL is released while meshing.)");
+  m.def("verify", &verify, "tri"_a, "mesh"_a, py::kw_only(), "min_angle"_a = 20.7,
+        "max_area"_a = py::none(), "max_reported"_a = 20,
+        R"(Verifies a mesh of a PSLG with pdd::verify's defaults: the one verdict of `pdd-mesh
+--verify`, pdd-verify and the C++ library.
+
+tri: the input dict given to triangulate or mesh (the faces are read as pdd reads them).
+mesh: a dict with 'vertices' (n, 2) and 'triangles' (t, 3), e.g. what triangulate returns.
+Checks exact local Delaunay of every interior edge, orientation, every input segment a union
+of mesh edges, the domain's area covered, every triangle's area <= max_area, and the angle
+bound min_angle on every triangle but those pdd's rule exempts (shielded corners of input angles
+< 60 deg; on a domain that is not closed loops, the cluster triangles at small angles between
+segments). Returns a dict: ok, the count of each kind of violation, area_domain, area_mesh,
+area_ok and messages (the first max_reported, with ids and coordinates).)");
   m.attr("supported_switches") = std::string(pdd::triangle::supported_switches);
 }

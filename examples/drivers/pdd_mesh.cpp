@@ -220,8 +220,9 @@ void generate_mesh(const cli_options& o, mesh_run& r, progress& bar) {
   }
 }
 
-/// Statistics of the merged mesh and, with --verify, its verification (shielded triangles
-/// keep their input angle: exempt from the quality check only).
+/// Statistics of the merged mesh and, with --verify, its verification (pdd::verify with its
+/// defaults: shielded or cluster triangles keep their small angle, exempt from the quality check
+/// only).
 void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
   if (!r.mesh) return;
   if (!r.st) { // the monolithic run (the decoupled ones were checked and measured on the way)
@@ -234,12 +235,9 @@ void measure_and_verify(const cli_options& o, mesh_run& r, progress& bar) {
   if (!o.verify) return;
   bar.stage("verifying");
   const auto t0 = std::chrono::steady_clock::now();
-  pdd::verify_options vo{.criteria = r.options.criteria};
-  vo.quality_exempt =
-      r.props.closed_loops
-          ? pdd::find_shielded_triangles(*r.mesh, r.domain)
-          : pdd::find_cluster_exempt_triangles(*r.mesh, r.domain, r.options.criteria.min_angle_deg);
-  r.report = pdd::verify(*r.mesh, r.domain, vo, r.sizing);
+  // the library's default verification, as README's example calls it: the faces as generate
+  // read them and pdd's one rule for the triangles exempt from the angle bound
+  r.report = pdd::verify(*r.mesh, r.domain, {.criteria = r.options.criteria}, r.sizing);
   r.t_verify = pdd::seconds_since(t0);
 }
 

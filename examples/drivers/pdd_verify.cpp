@@ -11,7 +11,6 @@
 // error.
 #include "exit_code.hpp"
 
-#include <pdd/geometry/properties.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/mesh/verify_pieces.hpp>
@@ -82,9 +81,9 @@ void print_report(const pdd::pieces_report& r) {
 
 int run(const cli_options& o) {
   const auto start = std::chrono::steady_clock::now();
-  pdd::pslg input = pdd::read_poly(o.input);
-  // validates the input, throws geometry_error; not closed loops: Triangle's rule
-  if (!pdd::analyze(input).closed_loops) input.rule = pdd::domain_rule::triangle;
+  // read as pdd-mesh read it (verify_pieces validates it, geometry_error, and reads a domain
+  // that is not one of closed loops by Triangle's rule: pdd::domain_as_generated)
+  const pdd::pslg input = pdd::read_poly(o.input);
   pdd::verify_options vo{.criteria = o.criteria, .max_reported = o.max_reported};
   const pdd::pieces_report r = pdd::verify_pieces(o.index, input, vo);
   const double seconds =

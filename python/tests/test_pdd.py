@@ -268,3 +268,34 @@ def test_dense_features_are_split_by_a_chord():
     assert r["statistics"]["chord_splits"] == 1
     assert r["statistics"]["interface_splits"] == 0
     assert abs(areas(r["vertices"], r["triangles"]).sum() - 16.0) < 1e-12
+
+
+def test_verify_is_the_library_verdict():
+    # issue 42: pdd.verify is pdd::verify with its defaults: the faces as pdd reads the PSLG and
+    # pdd's exemptions (here a general PSLG: a 30 deg sector between the diagonal and a dangling
+    # segment from its corner, meshed whole with the kernel's clusters), at N = 1 and 4
+    sq = square()
+    v = np.vstack([sq["vertices"], [[0.1, 0.5], [0.3, 0.8], [0.9, 0.9 * np.tan(np.pi / 12)]]])
+    s = np.vstack([sq["segments"], [[0, 2], [4, 5], [0, 6]]])
+    tri = dict(vertices=v, segments=s)
+    for n in (1, 4):
+        r = pdd.mesh(v, s, max_area=0.002, subdomains=n)
+        rep = pdd.verify(tri, r, max_area=0.002)
+        assert rep["ok"], rep["messages"]
+        assert abs(rep["area_mesh"] - 1.0) < 1e-12 and rep["area_ok"]
+    # a tighter area bound than the mesh was made for: every larger triangle is reported
+    rep = pdd.verify(tri, r, max_area=0.001)
+    assert not rep["ok"] and rep["area_violations"] > 0
+    # a flipped triangle: an orientation violation (and its edges no longer match)
+    bad = dict(vertices=r["vertices"], triangles=r["triangles"][:, ::-1].copy())
+    rep = pdd.verify(tri, bad)
+    assert rep["orientation_violations"] == len(r["triangles"])
+    # a triangle dropped: the area is short and a boundary edge lies on no segment
+    cut = dict(vertices=r["vertices"], triangles=r["triangles"][1:])
+    rep = pdd.verify(tri, cut)
+    assert not rep["area_ok"] and rep["nonmanifold_edges"] >= 1
+    # the same verdict through triangulate's dicts
+    t = pdd.triangulate(dict(vertices=v, segments=s), "pq20.7a0.002")
+    assert pdd.verify(dict(vertices=v, segments=s), t, max_area=0.002)["ok"]
+    with pytest.raises(ValueError, match="mesh triangles"):
+        pdd.verify(tri, dict(vertices=r["vertices"], triangles=np.zeros((3, 2))))

@@ -1,6 +1,8 @@
 // libFuzzer target over the whole user path of pdd-mesh: the bytes are read as a Triangle .poly
 // (pdd::parse_poly from memory), validated, meshed by pdd::generate with N = 1 and N = 2, and
-// every mesh is checked by pdd::verify: exact Delaunay, orientation, conformity to the input
+// every mesh is checked by pdd::verify with its default options, as README's library example
+// calls it (on the PSLG given to generate; it reads the faces and picks the exemptions itself,
+// as pdd-mesh --verify does): exact Delaunay, orientation, conformity to the input
 // segments, the domain area covered, the area bound, and the angle bound on every triangle that
 // is not exempt.
 //
@@ -238,15 +240,13 @@ std::optional<pdd::mesh_criteria> small_mesh_criteria(const fuzz_domain& d, doub
   return c;
 }
 
-/// Verifies a mesh of d (shielded corners, or on a general domain cluster-exempt triangles,
-/// exempt from the angle bound only).
+/// Verifies a mesh of d as a library user does: pdd::verify on the PSLG given to generate, with
+/// its default options (the faces as generate reads them and pdd's one rule for the triangles
+/// exempt from the angle bound: shielded corners, or on a general domain cluster triangles), so
+/// that this target and pdd-mesh --verify can never drift apart.
 void check_mesh(const pdd::triangle_mesh& m, const fuzz_domain& d, const pdd::mesh_criteria& c,
                 std::size_t n) {
-  const pdd::pslg g = d.as_meshed();
-  pdd::verify_options vo{.criteria = c};
-  vo.quality_exempt = d.general ? pdd::find_cluster_exempt_triangles(m, g, c.min_angle_deg)
-                                : pdd::find_shielded_triangles(m, g);
-  const pdd::verification_report rep = pdd::verify(m, g, vo);
+  const pdd::verification_report rep = pdd::verify(m, d.input, {.criteria = c});
   if (rep.ok()) return;
   std::string what = "N = " + std::to_string(n) + (d.general ? " (general domain)" : "") +
                      ", max_area " + std::to_string(c.max_area) + ": the mesh fails verification:";

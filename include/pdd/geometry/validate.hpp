@@ -69,4 +69,14 @@ inline bool has_closed_loops(const pslg& g) {
   return pf.closed_loops;
 }
 
+/// g as pdd::generate reads a user's PSLG: by Triangle's rule (domain_rule::triangle) unless it
+/// is one of closed loops (has_closed_loops; both rules agree there and g.rule is kept). What
+/// pdd::verify checks a mesh against by default, so that it and generate take the same faces
+/// for the domain and the same segments for its constraints.
+/// \throws geometry_error as validate(). Complexity O(n log n) expected.
+inline pslg domain_as_generated(pslg g) {
+  if (g.rule != domain_rule::triangle && !has_closed_loops(g)) g.rule = domain_rule::triangle;
+  return g;
+}
+
 } // namespace pdd

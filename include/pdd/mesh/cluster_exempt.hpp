@@ -45,52 +45,111 @@ inline std::vector<std::pair<index_t, index_t>> cluster_segments(const pslg& g) 
   return out;
 }
 
-/// True when q lies on segment [a, b] (verify's on_segment_line, within the segment's extent).
-inline bool on_segment(const point& a, const point& b, const point& q) {
-  const double t = (q.x - a.x) * (b.x - a.x) + (q.y - a.y) * (b.y - a.y);
-  const double l2 = (b.x - a.x) * (b.x - a.x) + (b.y - a.y) * (b.y - a.y);
-  return t >= 0.0 && t <= l2 && verify_impl::on_segment_line(a, b, q);
+/// The mesh edges along cluster segment [a, b], walked from the mesh vertex `from` at one of its
+/// ends towards `to`, the other, as far as the mesh holds it (to the end in a mesh of the whole
+/// domain; to the mesh's border in one subdomain's piece): from each vertex the incident edge
+/// whose far end lies on the segment's line (verify's on_segment_line), strictly further along
+/// it, nearest first. Needs no segment list (a mesh read from a file has none).
+inline void walk_cluster_segment(const verify_impl::edge_table& table, const triangle_mesh& m,
+                                 index_t from, const point& to,
+                                 std::vector<std::array<point, 2>>& edges) {
+  const point a = m.vertices[from];
+  const double dx = to.x - a.x, dy = to.y - a.y, len2 = dx * dx + dy * dy;
+  const auto param = [&](const point& q) { return ((q.x - a.x) * dx + (q.y - a.y) * dy) / len2; };
+  index_t cur = from;
+  double t_cur = 0.0;
+  for (std::size_t step = 0; step < m.vertices.size() && t_cur < 1.0; ++step) {
+    index_t next = verify_impl::none;
+    double t_next = 2.0;
+    table.for_each_incident(cur, [&](index_t k) {
+      const verify_impl::edge_record& e = table.edges()[k];
+      const index_t w = e.a == cur ? e.b : e.a;
+      const point& q = m.vertices[w];
+      const double t = q == to ? 1.0 : param(q);
+      if (t <= t_cur || t > 1.0 || t >= t_next || !verify_impl::on_segment_line(a, to, q)) return;
+      next = w, t_next = t;
+    });
+    if (next == verify_impl::none) return;
+    edges.push_back({m.vertices[cur], m.vertices[next]});
+    cur = next, t_cur = t_next;
+  }
+}
+
+/// The mesh edges on the cluster segments of g, walked from each end of each that is a vertex
+/// of m (walk_cluster_segment).
+inline std::vector<std::array<point, 2>>
+cluster_mesh_edges(const triangle_mesh& m, const pslg& g,
+                   const std::vector<std::pair<index_t, index_t>>& clusters) {
+  std::vector<char> valid(m.triangles.size(), 1);
+  for (std::size_t t = 0; t < valid.size(); ++t)
+    for (const index_t v : m.triangles[t])
+      if (v >= m.vertices.size()) valid[t] = 0;
+  const verify_impl::edge_table table(m, valid);
+  verify_impl::vertex_lookup lookup;
+  lookup.reserve(m.vertices.size());
+  for (std::size_t v = 0; v < m.vertices.size(); ++v)
+    lookup.try_emplace(m.vertices[v], static_cast<index_t>(v));
+  std::vector<std::array<point, 2>> edges;
+  for (const auto& [u, w] : clusters)
+    for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}}) {
+      const auto it = lookup.find(g.vertices[from]);
+      if (it != lookup.end()) walk_cluster_segment(table, m, it->second, g.vertices[to], edges);
+    }
+  return edges;
+}
+
+/// Per triangle of m: 1 when its smallest angle is below min_angle_deg.
+inline std::vector<char> below_angle_bound(const triangle_mesh& m, double min_angle_deg) {
+  std::vector<char> below(m.triangles.size(), 0);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    const auto& tri = m.triangles[t];
+    if (tri[0] >= m.vertices.size() || tri[1] >= m.vertices.size() || tri[2] >= m.vertices.size())
+      continue; // malformed: verify reports it
+    const auto ang =
+        triangle_angles_deg(m.vertices[tri[0]], m.vertices[tri[1]], m.vertices[tri[2]]);
+    below[t] = std::min({ang[0], ang[1], ang[2]}) < min_angle_deg;
+  }
+  return below;
 }
 } // namespace detail
 
-/// Per triangle of m, a mesh of domain g (domain_rule::triangle, not closed loops): 1 when its
-/// smallest angle is below min_angle_deg and it lies at a small angle between g's segments (see
-/// the file comment). Use it as verify_options::quality_exempt.
-/// Complexity O(S_m C + T + B E) for S_m mesh segment edges, C cluster segments, B triangles
-/// below the bound and E mesh edges on cluster segments. Thread-safe.
+/// Per triangle of m, a mesh of domain g (domain_rule::triangle, not closed loops) or a piece of
+/// one (a subdomain's mesh): 1 when its smallest angle is below min_angle_deg and it lies at a
+/// small angle between g's segments (see the file comment). The mesh edges on the cluster
+/// segments are found in the mesh itself (walked from the segments' ends that it holds), never
+/// in m.segments, so a mesh read back from a file gets the same answer as the one in memory.
+/// pdd::verify applies it by itself (pdd::find_quality_exempt_triangles).
+/// Complexity O(T + V + C D + B E) for C cluster segments, D mesh vertices along them, B
+/// triangles below the bound and E mesh edges on cluster segments (nothing is built when B = 0).
+/// Thread-safe.
 inline std::vector<char> find_cluster_exempt_triangles(const triangle_mesh& m, const pslg& g,
                                                        double min_angle_deg) {
-  std::vector<char> exempt(m.triangles.size(), 0);
+  std::vector<char> exempt = detail::below_angle_bound(m, min_angle_deg);
+  if (std::find(exempt.begin(), exempt.end(), 1) == exempt.end()) return exempt;
   const auto clusters = detail::cluster_segments(g);
-  if (clusters.empty()) return exempt;
+  if (clusters.empty()) return std::vector<char>(m.triangles.size(), 0);
+  const std::vector<std::array<point, 2>> edges = detail::cluster_mesh_edges(m, g, clusters);
   std::vector<char> on_cluster(m.vertices.size(), 0);
-  std::vector<std::array<point, 2>> edges;
-  for (const mesh_edge& e : m.segments)
-    for (const auto& [u, w] : clusters) {
-      const point &a = g.vertices[u], &b = g.vertices[w];
-      if (!detail::on_segment(a, b, m.vertices[e.a]) || !detail::on_segment(a, b, m.vertices[e.b]))
-        continue;
-      on_cluster[e.a] = on_cluster[e.b] = 1;
-      edges.push_back({m.vertices[e.a], m.vertices[e.b]});
-    }
+  {
+    detail::verify_impl::vertex_lookup at;
+    for (const auto& e : edges)
+      for (const point& p : e)
+        at.try_emplace(p, 0);
+    for (std::size_t v = 0; v < m.vertices.size(); ++v)
+      on_cluster[v] = at.count(m.vertices[v]) != 0;
+  }
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
+    if (!exempt[t]) continue;
     const auto& tri = m.triangles[t];
+    if (on_cluster[tri[0]] || on_cluster[tri[1]] || on_cluster[tri[2]]) continue;
     const point &a = m.vertices[tri[0]], &b = m.vertices[tri[1]], &c = m.vertices[tri[2]];
-    const auto ang = detail::triangle_angles_deg(a, b, c);
-    if (std::min({ang[0], ang[1], ang[2]}) >= min_angle_deg) continue;
-    if (on_cluster[tri[0]] || on_cluster[tri[1]] || on_cluster[tri[2]]) {
-      exempt[t] = 1;
-      continue;
-    }
     const auto k =
         CGAL::circumcenter(detail::verify_impl::to_cgal(a), detail::verify_impl::to_cgal(b),
                            detail::verify_impl::to_cgal(c));
     const point cc{k.x(), k.y()};
-    for (const auto& e : edges)
-      if ((e[0].x - cc.x) * (e[1].x - cc.x) + (e[0].y - cc.y) * (e[1].y - cc.y) <= 0.0) {
-        exempt[t] = 1;
-        break;
-      }
+    exempt[t] = std::any_of(edges.begin(), edges.end(), [&](const std::array<point, 2>& e) {
+      return (e[0].x - cc.x) * (e[1].x - cc.x) + (e[0].y - cc.y) * (e[1].y - cc.y) <= 0.0;
+    });
   }
   return exempt;
 }

@@ -12,8 +12,8 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/validate.hpp>
-#include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/detail/quality_check.hpp>
+#include <pdd/mesh/quality_exemptions.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/uniform.hpp>
@@ -69,21 +69,16 @@ void check_quality(const triangle_mesh& m, const small_input_angles& angles,
   detail::check_quality_exempt(m, find_shielded_triangles(m, angles), criteria, sizing, subdomain);
 }
 
-/// check_quality with the small input angles of `domain` (pdd::find_small_input_angles); on a
-/// domain of domain_rule::triangle that is not one of closed loops (meshed whole, unshielded),
-/// the triangles at small angles between segments are exempt instead
-/// (pdd::find_cluster_exempt_triangles).
-/// \throws pdd::geometry_error as find_loops() or validate(), pdd::meshing_error as above.
+/// check_quality with pdd's one rule for the triangles exempt from the angle bound
+/// (pdd::quality_exemptions of `domain`, as meshed: the shielded triangles of its small input
+/// angles on closed loops; on a domain of domain_rule::triangle that is not one of closed loops,
+/// meshed unshielded, the cluster triangles at small angles between segments).
+/// \throws geometry_error as validate(), pdd::meshing_error as above.
 template <SizingField S = uniform_sizing>
 void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criteria& criteria,
                    const S& sizing = {}, long long subdomain = -1) {
-  if (domain.rule == domain_rule::triangle && !has_closed_loops(domain)) {
-    detail::check_quality_exempt(m,
-                                 find_cluster_exempt_triangles(m, domain, criteria.min_angle_deg),
-                                 criteria, sizing, subdomain);
-    return;
-  }
-  check_quality(m, find_small_input_angles(domain), criteria, sizing, subdomain);
+  detail::check_quality_exempt(m, quality_exemptions(domain)(m, criteria.min_angle_deg), criteria,
+                               sizing, subdomain);
 }
 
 /// A MeshSink decorator that runs check_quality on every subdomain mesh before handing it to
@@ -99,32 +94,22 @@ public:
   static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
 
   quality_check_sink(Inner& inner, const pslg& domain, mesh_criteria criteria, S sizing = {})
-      : inner_(inner), angles_(find_small_input_angles(domain)), criteria_(criteria),
-        sizing_(std::move(sizing)) {
-    if (domain.rule == domain_rule::triangle && !has_closed_loops(domain)) general_ = &domain;
-  }
+      : inner_(inner), exemptions_(domain), criteria_(criteria), sizing_(std::move(sizing)) {}
 
   void start(index_t n) {
     if constexpr (requires { inner_.start(n); }) inner_.start(n);
   }
   /// Checks the mesh (\throws as check_quality, with id), then hands it on.
   void consume(index_t id, triangle_mesh&& mesh) {
-    if (general_) // meshed whole: the cluster exemption (see check_quality)
-      detail::check_quality_exempt(
-          mesh, find_cluster_exempt_triangles(mesh, *general_, criteria_.min_angle_deg), criteria_,
-          sizing_, static_cast<long long>(id));
-    else
-      check_quality(mesh, angles_, criteria_, sizing_, static_cast<long long>(id));
+    detail::check_quality_exempt(mesh, exemptions_(mesh, criteria_.min_angle_deg), criteria_,
+                                 sizing_, static_cast<long long>(id));
     inner_.consume(id, std::move(mesh));
   }
   void finish() { inner_.finish(); }
 
 private:
   Inner& inner_;
-  small_input_angles angles_; ///< the domain's, found once (not per subdomain)
-  /// The domain when it is not one of closed loops (domain_rule::triangle; it must outlive the
-  /// sink), else null.
-  const pslg* general_ = nullptr;
+  quality_exemptions exemptions_; ///< the domain's, found once (not per subdomain)
   mesh_criteria criteria_;
   S sizing_;
 };

@@ -6,6 +6,7 @@
 #include <pdd/core/mesh_criteria.hpp>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,10 +20,17 @@ struct verify_options {
   double area_tolerance = 1e-9;
   /// How many violations are described in messages (all are counted).
   std::size_t max_reported = 20;
-  /// Per triangle: exempt from the quality (minimum angle) check only, e.g. the shielded
-  /// triangles of small input angles (pdd::find_shielded_triangles, dissertation 8.1), whose
-  /// smallest angle is the input angle. Empty: none exempt. All other checks still apply.
-  std::vector<char> quality_exempt{};
+  /// Per triangle: exempt from the quality (minimum angle) check only. Absent (the default):
+  /// pdd's own rule, the one every mesh pdd makes is checked by (pdd::quality_exemptions: the
+  /// shielded triangles of input angles < 60 deg on closed loops, dissertation 8.1; the
+  /// cluster triangles at small angles between segments on other domains). Given: exactly
+  /// these (an empty vector exempts none). All other checks apply to every triangle.
+  std::optional<std::vector<char>> quality_exempt{};
+  /// How the PSLG's faces are read. False (the default): as pdd::generate reads a user's PSLG
+  /// (pdd::domain_as_generated: Triangle's rule unless it is one of closed loops), so that
+  /// verify(generate(d).mesh, d) checks what generate meshed. True: by pslg::rule as given
+  /// (e.g. pdd's own subdomains: odd nesting, no hole points).
+  bool rule_as_given = false;
 };
 
 /// What verify() found. Counts are exact; messages describe the first max_reported

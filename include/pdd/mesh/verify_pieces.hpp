@@ -12,8 +12,8 @@
 #include <pdd/geometry/loops.hpp>
 #include <pdd/io/piece_files.hpp>
 #include <pdd/mesh/detail/verify_pieces.hpp>
+#include <pdd/mesh/quality_exemptions.hpp>
 #include <pdd/mesh/verify.hpp>
-#include <pdd/shielding/shield_statistics.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -58,15 +58,15 @@ struct pieces_report {
 
 namespace detail {
 
-/// The per-piece checks of pdd::verify (orientation, quality outside the shielded triangles of
-/// the input's small `angles`, area bound, duplicates, nonmanifold and locally Delaunay interior
-/// edges) on piece m; adds its counts and messages (prefixed with `name`) to r and returns the edge
-/// table, whose one-triangle edges are the piece's boundary.
+/// The per-piece checks of pdd::verify (orientation, quality outside the triangles `exemptions`
+/// exempts (unless o.quality_exempt is given), area bound, duplicates, nonmanifold and locally
+/// Delaunay interior edges) on piece m; adds its counts and messages (prefixed with `name`) to r
+/// and returns the edge table, whose one-triangle edges are the piece's boundary.
 inline verify_impl::edge_table check_piece(const triangle_mesh& m, const std::string& name,
-                                           const small_input_angles& angles,
+                                           const quality_exemptions& exemptions,
                                            const verify_options& o, pieces_report& r) {
   verify_options vo = o;
-  vo.quality_exempt = find_shielded_triangles(m, angles);
+  if (!vo.quality_exempt) vo.quality_exempt = exemptions(m, o.criteria.min_angle_deg);
   verification_report local;
   violation_sink sink{local, o.max_reported};
   const auto no_sizing = [](const point&) { return std::numeric_limits<double>::infinity(); };
@@ -168,9 +168,10 @@ inline void report_unmatched(const pieces_impl::open_edge_table& open, const psl
 
 /// Verifies the per-subdomain mesh indexed by the .pvtu or .pddi at `index` (the format told
 /// from the files, pdd::read_piece_index and pdd::read_piece) against the input PSLG
-/// `input` (the domain it meshes) and o.criteria (min_angle_deg, uniform max_area; pieces
-/// carry no sizing field): each piece alone with pdd::verify's checks (orientation, angle bound
-/// outside the shielded triangles of the input's small angles, area bound, duplicate vertices,
+/// `input` (the PSLG it meshes, read as pdd::verify reads it: pdd::domain_as_generated unless
+/// o.rule_as_given) and o.criteria (min_angle_deg, uniform max_area; pieces carry no sizing
+/// field): each piece alone with pdd::verify's checks (orientation, angle bound outside the
+/// triangles pdd's one rule exempts, pdd::quality_exemptions, area bound, duplicate vertices,
 /// nonmanifold edges, exact local Delaunay of its interior edges); then each piece boundary
 /// edge must appear in exactly one other piece with bitwise equal endpoints in the opposite
 /// direction and be locally Delaunay with the triangles of both sides (exact
@@ -183,16 +184,17 @@ inline void report_unmatched(const pieces_impl::open_edge_table& open, const psl
 /// them): O(largest piece + boundary edges of all pieces) at worst, reported as max_open_edges.
 /// \throws pdd::error naming the file for an unreadable, truncated, tampered (binary: its
 /// checksum) or foreign index or piece;
-/// geometry_error as domain_area(input). Complexity: O(total size) expected.
-inline pieces_report verify_pieces(const std::filesystem::path& index, const pslg& input,
+/// geometry_error as pdd::validate(input). Complexity: O(total size) expected.
+inline pieces_report verify_pieces(const std::filesystem::path& index, const pslg& given,
                                    const verify_options& o = {}) {
+  const pslg input = o.rule_as_given ? given : domain_as_generated(given);
   const std::vector<std::filesystem::path> files = read_piece_index(index);
   std::vector<std::string> names;
   for (const auto& f : files)
     names.push_back(f.filename().string());
   pieces_report r;
   r.area_domain = domain_area(input);
-  const small_input_angles angles = find_small_input_angles(input); // once, not per piece
+  const quality_exemptions exemptions(input); // once, not per piece
   detail::pieces_impl::open_edge_table open;
   for (std::size_t k = 0; k < files.size(); ++k) {
     const triangle_mesh m = read_piece(files[k]);
@@ -200,7 +202,7 @@ inline pieces_report verify_pieces(const std::filesystem::path& index, const psl
     r.triangles += m.triangles.size();
     r.vertices += m.vertices.size();
     r.largest_piece_triangles = std::max(r.largest_piece_triangles, m.triangles.size());
-    const auto table = detail::check_piece(m, names[k], angles, o, r);
+    const auto table = detail::check_piece(m, names[k], exemptions, o, r);
     detail::match_boundary(m, table, static_cast<std::uint32_t>(k), names, open, o.max_reported, r);
   }
   detail::report_unmatched(open, input, names, o.max_reported, r);

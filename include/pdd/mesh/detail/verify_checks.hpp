@@ -46,12 +46,16 @@ enum triangle_flag : std::uint8_t {
   tri_area = 8
 };
 
+/// The flags of every triangle; o.quality_exempt as given (absent: none exempt; pdd::verify
+/// resolves its default before).
 template <class AreaBound>
 std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_options& o,
                                           const AreaBound& bound_at) {
   namespace vi = verify_impl;
   const std::size_t nv = m.vertices.size();
   std::vector<std::uint8_t> flags(m.triangles.size(), 0);
+  static const std::vector<char> none_exempt;
+  const std::vector<char>& exempt = o.quality_exempt ? *o.quality_exempt : none_exempt;
   // the smallest angle below min_angle_deg - 1e-9: by its squared sine (no atan2 per triangle;
   // the sine is monotone up to 90 deg, and no triangle's smallest angle exceeds 60)
   const double min_angle = o.criteria.min_angle_deg - 1e-9;
@@ -74,8 +78,7 @@ std::vector<std::uint8_t> check_triangles(const triangle_mesh& m, const verify_o
       std::uint8_t f = 0;
       if (CGAL::orientation(vi::to_cgal(a), vi::to_cgal(b), vi::to_cgal(c)) != CGAL::LEFT_TURN)
         f |= tri_orientation;
-      if (below_angle(a, b, c) && !(t < o.quality_exempt.size() && o.quality_exempt[t]))
-        f |= tri_quality;
+      if (below_angle(a, b, c) && !(t < exempt.size() && exempt[t])) f |= tri_quality;
       const double bound = std::min(o.criteria.max_area, bound_at(triangle_centroid(a, b, c)));
       if (triangle_area(a, b, c) > bound * (1.0 + 1e-12)) f |= tri_area;
       flags[t] = f;
