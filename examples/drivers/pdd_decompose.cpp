@@ -40,6 +40,7 @@
 #include <pdd/io/svg.hpp>
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/pipeline.hpp>
 #include <pdd/pipeline/system.hpp>
 
@@ -246,5 +247,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? 0 : 2;
   }
-  return pdd::drivers::run_reporting_errors("pdd-decompose", o.input, [&] { return run(o); });
+  // --threads T: nothing of the run (its checks and statistics included) on more than T threads
+  return pdd::drivers::run_reporting_errors("pdd-decompose", o.input, [&] {
+    return pdd::with_threads(o.madd.threads, [&] { return run(o); });
+  });
 }

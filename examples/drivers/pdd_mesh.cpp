@@ -34,6 +34,7 @@
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/pipeline/system.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/any_sizing.hpp>
@@ -483,5 +484,7 @@ int main(int argc, char** argv) {
     const int rc = app.exit(e);
     return rc == 0 ? ok : usage;
   }
-  return pdd::drivers::run_reporting_errors("pdd-mesh", o.input, [&] { return run(o); });
+  // --threads T: nothing of the run (its checks and statistics included) on more than T threads
+  return pdd::drivers::run_reporting_errors(
+      "pdd-mesh", o.input, [&] { return pdd::with_threads(o.threads, [&] { return run(o); }); });
 }

@@ -13,6 +13,7 @@
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/region_attributes.hpp>
+#include <pdd/parallel/parallel_for.hpp>
 #include <pdd/triangle/file_names.hpp>
 #include <pdd/triangle/switches.hpp>
 #include <pdd/triangle/triangulate.hpp>
@@ -157,10 +158,11 @@ int fail(const char* what, const std::exception& e, int code) {
   return code;
 }
 
-/// run(o), with every error reported on stderr and mapped to its exit code.
+/// run(o) on at most --threads threads, with every error reported on stderr and mapped to its exit
+/// code.
 int run_reporting_errors(const cli_options& o) {
-  try {
-    return run(o);
+  try { // --threads T: nothing of the run on more than T threads
+    return pdd::with_threads(o.run.threads, [&] { return run(o); });
   } catch (const pdd::triangle::switch_error& e) {
     return fail("error", e, usage);
   } catch (const pdd::input_error& e) {

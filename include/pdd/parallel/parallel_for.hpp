@@ -20,6 +20,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <utility>
 
 namespace pdd::detail {
 
@@ -78,3 +79,18 @@ void parallel_for_index(std::size_t n, unsigned threads, F&& f) {
 }
 
 } // namespace pdd::detail
+
+namespace pdd {
+
+/// Runs f() with at most `threads` threads for everything it runs in parallel through oneTBB
+/// (a tbb::task_arena of that concurrency; 0: TBB's default, f runs directly): a run asked for
+/// one thread uses one, its checks and statistics included. Returns what f returns; exceptions
+/// propagate. Thread-safe.
+template <class F>
+decltype(auto) with_threads(unsigned threads, F&& f) {
+  if (threads == 0) return f();
+  tbb::task_arena arena(static_cast<int>(threads));
+  return arena.execute(std::forward<F>(f));
+}
+
+} // namespace pdd
