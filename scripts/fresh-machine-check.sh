@@ -65,8 +65,9 @@ t_root=$(($(date +%s) - t0))
 
 # the committed HEAD, as a clone has it (no build outputs, no untracked files)
 mkdir -p "$root/work"
+commit=$(git -C "$repo" rev-parse --short HEAD)
 git clone -q --no-local "$repo" "$root/work/main"
-git -C "$root/work/main" checkout -q "$(git -C "$repo" rev-parse HEAD)"
+git -C "$root/work/main" checkout -q "$commit"
 if [ -d "$repo/../shared" ]; then
   cp -a "$repo/../shared" "$root/work/shared"
   chmod -R a-w "$root/work/shared"
@@ -97,5 +98,5 @@ if [ $status -eq 0 ] && [ $only_quickstart -eq 0 ]; then
 fi
 [ $status -eq 0 ] || tail -40 "$logs"/*.log
 echo "fresh-machine-check: root ${t_root} s, quickstart ${t_quick} s, .ci/run ${t_ci} s:" \
-     "$([ $status -eq 0 ] && echo passed || echo FAILED) at $(git -C "$repo" rev-parse --short HEAD)"
+     "$([ $status -eq 0 ] && echo passed || echo FAILED) at $commit"
 exit $status
