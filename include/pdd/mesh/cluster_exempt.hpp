@@ -52,7 +52,7 @@ inline std::vector<std::pair<index_t, index_t>> cluster_segments(const pslg& g) 
 /// it, nearest first. Needs no segment list (a mesh read from a file has none).
 inline void walk_cluster_segment(const verify_impl::edge_table& table, const triangle_mesh& m,
                                  index_t from, const point& to,
-                                 std::vector<std::array<point, 2>>& edges) {
+                                 std::vector<std::array<index_t, 2>>& edges) {
   const point a = m.vertices[from];
   const double dx = to.x - a.x, dy = to.y - a.y, len2 = dx * dx + dy * dy;
   const auto param = [&](const point& q) { return ((q.x - a.x) * dx + (q.y - a.y) * dy) / len2; };
@@ -70,26 +70,29 @@ inline void walk_cluster_segment(const verify_impl::edge_table& table, const tri
       next = w, t_next = t;
     });
     if (next == verify_impl::none) return;
-    edges.push_back({m.vertices[cur], m.vertices[next]});
+    edges.push_back({cur, next});
     cur = next, t_cur = t_next;
   }
 }
 
-/// The mesh edges on the cluster segments of g, walked from each end of each that is a vertex
-/// of m (walk_cluster_segment).
-inline std::vector<std::array<point, 2>>
+/// The mesh edges (vertex pairs) on the cluster segments of g, walked from each end of each
+/// that is a vertex of m (walk_cluster_segment).
+inline std::vector<std::array<index_t, 2>>
 cluster_mesh_edges(const triangle_mesh& m, const pslg& g,
                    const std::vector<std::pair<index_t, index_t>>& clusters) {
-  std::vector<char> valid(m.triangles.size(), 1);
-  for (std::size_t t = 0; t < valid.size(); ++t)
-    for (const index_t v : m.triangles[t])
-      if (v >= m.vertices.size()) valid[t] = 0;
+  std::vector<char> valid(m.triangles.size(), 1); // edge_table's precondition
+  for (std::size_t t = 0; t < valid.size(); ++t) {
+    const auto& tri = m.triangles[t];
+    valid[t] = tri[0] < m.vertices.size() && tri[1] < m.vertices.size() &&
+               tri[2] < m.vertices.size() && tri[0] != tri[1] && tri[1] != tri[2] &&
+               tri[0] != tri[2];
+  }
   const verify_impl::edge_table table(m, valid);
   verify_impl::vertex_lookup lookup;
   lookup.reserve(m.vertices.size());
   for (std::size_t v = 0; v < m.vertices.size(); ++v)
     lookup.try_emplace(m.vertices[v], static_cast<index_t>(v));
-  std::vector<std::array<point, 2>> edges;
+  std::vector<std::array<index_t, 2>> edges;
   for (const auto& [u, w] : clusters)
     for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}}) {
       const auto it = lookup.find(g.vertices[from]);
@@ -128,16 +131,10 @@ inline std::vector<char> find_cluster_exempt_triangles(const triangle_mesh& m, c
   if (std::find(exempt.begin(), exempt.end(), 1) == exempt.end()) return exempt;
   const auto clusters = detail::cluster_segments(g);
   if (clusters.empty()) return std::vector<char>(m.triangles.size(), 0);
-  const std::vector<std::array<point, 2>> edges = detail::cluster_mesh_edges(m, g, clusters);
+  const std::vector<std::array<index_t, 2>> edges = detail::cluster_mesh_edges(m, g, clusters);
   std::vector<char> on_cluster(m.vertices.size(), 0);
-  {
-    detail::verify_impl::vertex_lookup at;
-    for (const auto& e : edges)
-      for (const point& p : e)
-        at.try_emplace(p, 0);
-    for (std::size_t v = 0; v < m.vertices.size(); ++v)
-      on_cluster[v] = at.count(m.vertices[v]) != 0;
-  }
+  for (const auto& [u, w] : edges)
+    on_cluster[u] = on_cluster[w] = 1;
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {
     if (!exempt[t]) continue;
     const auto& tri = m.triangles[t];
@@ -147,8 +144,9 @@ inline std::vector<char> find_cluster_exempt_triangles(const triangle_mesh& m, c
         CGAL::circumcenter(detail::verify_impl::to_cgal(a), detail::verify_impl::to_cgal(b),
                            detail::verify_impl::to_cgal(c));
     const point cc{k.x(), k.y()};
-    exempt[t] = std::any_of(edges.begin(), edges.end(), [&](const std::array<point, 2>& e) {
-      return (e[0].x - cc.x) * (e[1].x - cc.x) + (e[0].y - cc.y) * (e[1].y - cc.y) <= 0.0;
+    exempt[t] = std::any_of(edges.begin(), edges.end(), [&](const std::array<index_t, 2>& e) {
+      const point &p = m.vertices[e[0]], &q = m.vertices[e[1]];
+      return (p.x - cc.x) * (q.x - cc.x) + (p.y - cc.y) * (q.y - cc.y) <= 0.0;
     });
   }
   return exempt;
