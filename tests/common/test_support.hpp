@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <pdd/core/pslg.hpp>
 
 #include <algorithm>
@@ -37,10 +39,14 @@ inline std::vector<std::filesystem::path> shared_poly_files() {
   return out;
 }
 
-/// A fresh path in the tests' temporary folder (the file is not created).
+/// A fresh path in the tests' temporary folder (the file is not created): named after the running
+/// test, or, outside a test (a namespace-scope file), after the process, since ctest runs every
+/// test of a binary in its own process at once and they would otherwise rewrite one file while
+/// another reads it.
 inline std::filesystem::path temp_path(const std::string& name) {
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-  std::string prefix = info ? std::string(info->test_suite_name()) + "_" + info->name() : "t";
+  std::string prefix = info ? std::string(info->test_suite_name()) + "_" + info->name()
+                            : "process" + std::to_string(::getpid());
   for (char& c : prefix)
     if (c == '/') c = '_';
   return std::filesystem::path(PDD_TEST_TMP_DIR) / (prefix + "_" + name);

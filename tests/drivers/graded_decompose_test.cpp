@@ -24,10 +24,13 @@ nlohmann::json read_json(const std::string& p) {
   return nlohmann::json::parse(in);
 }
 
-/// The unit square, weight 4 on the vertices of its left side (the first attribute).
-const std::string weighted_square = pdd::test::write_temp_file(
-    "graded_square.poly", "4 2 1 0\n1 0 0 4\n2 1 0 0\n3 1 1 0\n4 0 1 4\n4 0\n1 1 2\n2 2 3\n"
-                          "3 3 4\n4 4 1\n0\n");
+/// The unit square, weight 4 on the vertices of its left side (the first attribute), written
+/// for the running test.
+std::string weighted_square() {
+  return pdd::test::write_temp_file("graded_square.poly",
+                                    "4 2 1 0\n1 0 0 4\n2 1 0 0\n3 1 1 0\n4 0 1 4\n4 0\n1 1 2\n"
+                                    "2 2 3\n3 3 4\n4 4 1\n0\n");
+}
 
 } // namespace
 
@@ -35,7 +38,7 @@ TEST(PddDecomposeGraded, VertexWeightsGiveNSubdomainsAndStatistics) {
   const std::string stats = pdd::test::write_temp_file("graded_v.json", "");
   const std::string out = pdd::test::write_temp_file("graded_v.pdd", "");
   const auto r =
-      decompose(weighted_square + " -n 24 --vertex-weights --interpolation 0 " +
+      decompose(weighted_square() + " -n 24 --vertex-weights --interpolation 0 " +
                 "--uniform-factor 3 --weight-factor 3 -q --stats " + stats + " -o " + out);
   ASSERT_EQ(r.code, 0) << r.output;
   const auto j = read_json(stats);
@@ -47,12 +50,12 @@ TEST(PddDecomposeGraded, VertexWeightsGiveNSubdomainsAndStatistics) {
   EXPECT_EQ(j["graded"]["weight_min"].get<double>(), 0.0);
   EXPECT_GE(j["graded"]["weight_max"].get<double>(), 8.0);
   const auto d = pdd::read_decomposition(out);
-  EXPECT_TRUE(pdd::validate_decomposition(d, pdd::read_poly(weighted_square)).ok());
+  EXPECT_TRUE(pdd::validate_decomposition(d, pdd::read_poly(weighted_square())).ok());
 }
 
 TEST(PddDecomposeGraded, AreaFunctionStopsAtTheRatioBound) {
   const std::string stats = pdd::test::write_temp_file("graded_a.json", "");
-  const auto r = decompose(weighted_square + " --area-function '0.002+0.05*x' --area-ratio 1 " +
+  const auto r = decompose(weighted_square() + " --area-function '0.002+0.05*x' --area-ratio 1 " +
                            "--stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_NE(r.output.find("graded (area ratio): area / required area per subdomain"),
@@ -82,12 +85,12 @@ TEST(PddDecomposeGraded, BadOptionsAndFilesAreClearErrors) {
   r = decompose(plain + " -n 4 --area-function '0.1+*x'");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("column"), std::string::npos) << r.output;
-  EXPECT_EQ(decompose(weighted_square + " -n 4 --vertex-weights --interpolation 2").code, 2);
-  EXPECT_EQ(decompose(weighted_square + " --vertex-weights").code, 2); // N needed
-  EXPECT_EQ(decompose(weighted_square + " -n 4 --vertex-weights --node-weights " + bad).code, 2);
-  EXPECT_EQ(decompose(weighted_square + " -n 4 --vertex-weights --max-area 0.01").code, 2);
-  EXPECT_EQ(decompose(weighted_square + " -n 4 --vertex-weights --uniform-factor 0 "
-                                        "--weight-factor 0")
+  EXPECT_EQ(decompose(weighted_square() + " -n 4 --vertex-weights --interpolation 2").code, 2);
+  EXPECT_EQ(decompose(weighted_square() + " --vertex-weights").code, 2); // N needed
+  EXPECT_EQ(decompose(weighted_square() + " -n 4 --vertex-weights --node-weights " + bad).code, 2);
+  EXPECT_EQ(decompose(weighted_square() + " -n 4 --vertex-weights --max-area 0.01").code, 2);
+  EXPECT_EQ(decompose(weighted_square() + " -n 4 --vertex-weights --uniform-factor 0 "
+                                          "--weight-factor 0")
                 .code,
             1);
 }
@@ -98,7 +101,8 @@ TEST(PddDecomposeGraded, WeightAndAreaGridsFromFiles) {
   const std::string weights =
       pdd::test::write_temp_file("graded_w3.grid", "3 3 0 0 0.5 0.5\n9 0 0\n0 0 0\n0 0 0\n");
   const std::string stats = pdd::test::write_temp_file("graded_g.json", "");
-  auto r = decompose(weighted_square + " -n 12 -q --grid-weights " + weights + " --stats " + stats);
+  auto r =
+      decompose(weighted_square() + " -n 12 -q --grid-weights " + weights + " --stats " + stats);
   ASSERT_EQ(r.code, 0) << r.output;
   auto j = read_json(stats);
   EXPECT_EQ(j["graded"]["mode"], "grid_weights");
@@ -107,7 +111,7 @@ TEST(PddDecomposeGraded, WeightAndAreaGridsFromFiles) {
   // required area 0.05 everywhere (a 2 x 2 area grid): every subdomain <= 0.05 * 1.5
   const std::string areas =
       pdd::test::write_temp_file("graded_a2.grid", "2 2 0 0 1 1\n0.05 0.05\n0.05 0.05\n");
-  r = decompose(weighted_square + " -q --area-grid " + areas + " --area-ratio 1.5 --stats " +
+  r = decompose(weighted_square() + " -q --area-grid " + areas + " --area-ratio 1.5 --stats " +
                 stats);
   ASSERT_EQ(r.code, 0) << r.output;
   j = read_json(stats);
