@@ -27,15 +27,24 @@
 //   refuses it with a pdd::decomposition_error (MADD finds no separator clear of a face's
 //   features); a meshing_error or any other exception there is a finding.
 //
-// Refusals of bad input are passes: pdd::input_error (parser), pdd::geometry_error (validate,
-// shields), pdd::decomposition_error (MADD cannot split the domain as asked), pdd::limit_error,
-// and pdd::error from the parser (a .poly with 0 vertices names a .node file that cannot be
-// read). One more, on general domains only: the CGAL kernel's documented
-// pdd::unresolvable_input_error for two segments at a sub-degree angle ("... cannot be split:
-// its rounded split point falls beyond a neighbouring segment",
-// tests/kernels/triangle_rule_test.cpp UnresolvableAngleIsAnUnresolvableInputError) passes when
-// that is its message and two of the input's segments do meet at a shared vertex at less than
-// 1 deg; the same error on a domain of closed loops, or without such an angle, is a finding.
+// Refusals of bad input before meshing are passes: pdd::input_error (parser), pdd::error from
+// the parser (a .poly with 0 vertices names a .node file that cannot be read) and validate()'s
+// pdd::geometry_error. Once validate() accepted the input, a refusal by pdd::generate is a
+// finding unless it is one of the documented classes below (documented_refusals, each with the
+// test that shows it), matched by its exception type and message:
+// - decomposition_error "... connected components ..., more than the N subdomains asked for"
+//   (pipeline.Generate.MoreComponentsThanSubdomainsIsRefused);
+// - decomposition_error "MADD: cannot split the domain ..." (MADD finds no separator;
+//   madd.MaddDecompose.UnsplittableGivesError);
+// - on general domains only, the CGAL kernel's pdd::unresolvable_input_error for two segments at
+//   a sub-degree angle ("... cannot be split: its rounded split point falls beyond a
+//   neighbouring segment",
+//   kernels.CgalMesherTriangleRule.UnresolvableAngleIsAnUnresolvableInputError), when two of the
+//   input's segments do meet at a shared vertex at less than 1 deg.
+// (A geometry_error from the shields, say, is a finding: Lemma 23 excludes it for generate's
+// l <= lfs_min.) The counts of every class are printed at exit, and PDD_FUZZ_BOUNDS (set by the
+// ctest test) puts floors on the inputs meshed and verified and a ceiling on those skipped, as
+// fractions of all inputs: a run that tested less than it should fails though nothing crashed.
 // Everything else aborts, and libFuzzer keeps the input: any other exception (internal_error,
 // meshing_error, decoupling_error, std::exception), a crash, a sanitizer report,
 // or a mesh that fails verification.
@@ -87,10 +96,13 @@
 #include <cstdlib>
 #include <exception>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -105,6 +117,7 @@ constexpr double unresolvable_angle_deg = 1.0;
 /// What happened to the inputs, by kind of domain (0: closed loops, 1: general), printed at
 /// exit so that a run shows how many inputs were meshed and verified rather than skipped.
 struct outcome_counts {
+  std::size_t inputs = 0;              // every input of at most max_input_bytes
   std::size_t refused_input = 0;       // parser or validate() refused the bytes, > 256 vertices
   std::size_t skipped[2] = {0, 0};     // beyond the size limits
   std::size_t verified[2] = {0, 0};    // N = 1 meshed and verified
@@ -115,7 +128,34 @@ struct outcome_counts {
 };
 outcome_counts counts;
 
+/// A documented refusal of a validated input by generate() (see the file comment).
+struct documented_refusal {
+  const char* type;
+  const char* message; // a part of the message that names the class
+};
+constexpr documented_refusal documented_refusals[] = {
+    {"decomposition_error", "connected components (faces, for a general PSLG), more than the"},
+    {"decomposition_error", "MADD: cannot split the domain"},
+};
+
+/// Refusals of validated inputs by generate(), by exception type and message with its numbers
+/// blanked (printed at exit).
+std::map<std::string, std::size_t> refusal_tally;
+
+std::string refusal_key(const char* type, const std::string& what) {
+  std::string key = std::string(type) + ": ";
+  for (char ch : what.substr(0, 120))
+    if (ch >= '0' && ch <= '9') {
+      if (key.back() != '#') key += '#';
+    } else {
+      key += ch;
+    }
+  return key;
+}
+
 void print_counts() {
+  for (const auto& [key, n] : refusal_tally)
+    std::fprintf(stderr, "pdd fuzz refusal %6zu x %s\n", n, key.c_str());
   const outcome_counts& c = counts;
   std::fprintf(
       stderr,
@@ -127,6 +167,50 @@ void print_counts() {
       c.refused_input, c.skipped[0], c.verified[0], c.refused[0], c.n2_verified[0], c.n2_refused[0],
       c.skipped[1], c.verified[1], c.refused[1] + c.angle_refusals, c.angle_refusals,
       c.n2_verified[1], c.n2_refused[1]);
+}
+
+/// The outcomes a run's bounds name (PDD_FUZZ_BOUNDS), as fractions of its inputs.
+double outcome_fraction(const std::string& name) {
+  const outcome_counts& c = counts;
+  const std::pair<const char*, std::size_t> outcomes[] = {
+      {"refused_input", c.refused_input},     {"skipped", c.skipped[0] + c.skipped[1]},
+      {"loops_verified_n1", c.verified[0]},   {"loops_verified_n2", c.n2_verified[0]},
+      {"general_verified_n1", c.verified[1]}, {"general_verified_n2", c.n2_verified[1]}};
+  for (const auto& [key, n] : outcomes)
+    if (name == key)
+      return static_cast<double>(n) / static_cast<double>(std::max<std::size_t>(c.inputs, 1));
+  std::fprintf(stderr, "PDD_FUZZ_BOUNDS: unknown outcome '%s'\n", name.c_str());
+  std::_Exit(2);
+}
+
+/// Checks the run against PDD_FUZZ_BOUNDS ("outcome>=fraction" or "outcome<=fraction", comma
+/// separated; fractions of the inputs): a run that meshed and verified too few inputs, or
+/// skipped too many, tested less than it claims and fails (exit 1) though nothing crashed.
+void check_outcome_bounds() {
+  const char* text = std::getenv("PDD_FUZZ_BOUNDS");
+  if (text == nullptr) return;
+  std::istringstream list(text);
+  bool ok = true;
+  for (std::string bound; std::getline(list, bound, ',');) {
+    const std::size_t op = bound.find_first_of("<>");
+    if (op == std::string::npos || op + 1 >= bound.size() || bound[op + 1] != '=') {
+      std::fprintf(stderr, "PDD_FUZZ_BOUNDS: '%s' is not outcome>=x or outcome<=x\n",
+                   bound.c_str());
+      std::_Exit(2);
+    }
+    const double have = outcome_fraction(bound.substr(0, op));
+    const double want = std::stod(bound.substr(op + 2));
+    const bool met = bound[op] == '>' ? have >= want : have <= want;
+    std::fprintf(stderr, "pdd fuzz bound %s: %.4f of %zu inputs, %s\n", bound.c_str(), have,
+                 counts.inputs, met ? "met" : "NOT MET");
+    ok = ok && met;
+  }
+  if (!ok) std::_Exit(1);
+}
+
+void report_outcomes() {
+  print_counts();
+  check_outcome_bounds();
 }
 
 /// Reports a finding and aborts (libFuzzer then saves the input as crash-<hash>).
@@ -268,7 +352,18 @@ bool unresolvable_angle_refusal(const pdd::unresolvable_input_error& e, const fu
          smallest_segment_angle_deg(d.input) < unresolvable_angle_deg;
 }
 
-/// Meshes d with N subdomains; refusals of the input are passes, anything else a finding.
+/// Counts a refusal of one of the documented classes; any other is a finding.
+void count_documented_refusal(const char* type, const std::string& what, std::size_t n) {
+  for (const documented_refusal& r : documented_refusals)
+    if (std::string_view(type) == r.type && what.find(r.message) != std::string::npos) {
+      ++refusal_tally[refusal_key(type, what)];
+      return;
+    }
+  finding("N = " + std::to_string(n) + ": generate() refused a validated input with an " +
+          "undocumented " + type + ": " + what);
+}
+
+/// Meshes d with N subdomains; documented refusals are passes, anything else a finding.
 void mesh_and_check(const fuzz_domain& d, const pdd::mesh_criteria& c, std::size_t n) {
   pdd::generate_options o;
   o.criteria = c;
@@ -277,9 +372,10 @@ void mesh_and_check(const fuzz_domain& d, const pdd::mesh_criteria& c, std::size
   std::optional<pdd::generate_result> r;
   try {
     r = pdd::generate(d.input, o);
-  } catch (const pdd::geometry_error&) {
-  } catch (const pdd::decomposition_error&) {
-  } catch (const pdd::limit_error&) {
+  } catch (const pdd::geometry_error& e) {
+    count_documented_refusal("geometry_error", e.what(), n);
+  } catch (const pdd::decomposition_error& e) {
+    count_documented_refusal("decomposition_error", e.what(), n);
   } catch (const pdd::unresolvable_input_error& e) {
     if (n != 1 || !unresolvable_angle_refusal(e, d))
       finding("N = " + std::to_string(n) + ": " + e.what());
@@ -299,12 +395,13 @@ void mesh_and_check(const fuzz_domain& d, const pdd::mesh_criteria& c, std::size
 } // namespace
 
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
-  std::atexit(print_counts);
+  std::atexit(report_outcomes);
   return 0;
 }
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   if (size > max_input_bytes) return 0;
+  ++counts.inputs;
   try {
     const std::optional<fuzz_domain> d = read_domain(data, size);
     if (!d) {

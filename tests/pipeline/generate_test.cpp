@@ -192,6 +192,34 @@ TEST(Generate, RefusesSeparatorAnglesBelowSixtyUpFront) {
   }
 }
 
+TEST(Generate, MoreComponentsThanSubdomainsIsRefused) {
+  // Three disjoint squares cannot be 2 subdomains (MADD cuts no component into none): refused
+  // with both numbers, a documented refusal of a valid input (tests/fuzz counts it as one);
+  // 3 subdomains, or N chosen by pdd, mesh and verify.
+  pdd::pslg d;
+  for (const double x0 : {0.0, 2.0, 4.0})
+    d.add_loop(std::vector<pdd::point>{{x0, 0}, {x0 + 1, 0}, {x0 + 1, 1}, {x0, 1}}, 1);
+  pdd::generate_options o;
+  o.criteria.max_area = 0.01;
+  o.subdomains = 2;
+  try {
+    (void)pdd::generate(d, o);
+    ADD_FAILURE() << "N = 2 accepted for 3 components";
+  } catch (const pdd::decomposition_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("has 3 connected components"), std::string::npos) << what;
+    EXPECT_NE(what.find("more than the 2 subdomains asked for"), std::string::npos) << what;
+  }
+  for (const std::size_t n : {3u, 0u}) {
+    o.subdomains = n;
+    const auto r = pdd::generate(d, o);
+    if (n == 3) {
+      EXPECT_EQ(r.statistics.subdomains, 3u);
+    }
+    expect_verified(r.mesh, d, o.criteria, "three squares, N " + std::to_string(n));
+  }
+}
+
 TEST(Generate, AutomaticPlanFallsBackWhenASmallFeatureHoldsKDown) {
   // A unit square with a notch 1e-5 wide: lfs_min = 1e-5 bounds k (eq. 6.1), so the uniform
   // path would put ~1e5 points on every separator. The automatic plan decomposes, sees the
