@@ -8,13 +8,9 @@
 // (about 2M triangles) the run decouples within the split-point limit (measured +7.1 %).
 // Skips when ../shared is absent.
 #include <pdd/io/poly.hpp>
-#include <pdd/mesh/merge.hpp>
-#include <pdd/mesh/verify.hpp>
-#include <pdd/pipeline.hpp>
-#include <pdd/shielding/shield_statistics.hpp>
 
+#include "geometric_verified.hpp"
 #include "mesh_compare.hpp"
-#include "test_support.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,40 +19,9 @@
 #include <string>
 
 namespace geometric_bahamas_test {
-namespace {
 
-pdd::triangle_mesh mesh_verified(const pdd::pslg& g, const pdd::generate_options& o,
-                                 pdd::generate_statistics& st) {
-  pdd::pipeline<> p(g, o);
-  p.decouple();
-  pdd::triangle_mesh m;
-  if (p.subdomains() <= 1) {
-    m = p.mesh_whole();
-  } else {
-    pdd::merge_sink sink(o.threads);
-    p.mesh(sink);
-    m = sink.take();
-  }
-  st = p.statistics();
-  pdd::verify_options vo{.criteria = o.criteria};
-  vo.quality_exempt = pdd::find_shielded_triangles(m, g);
-  const pdd::verification_report rep = pdd::verify(m, g, vo, p.options().sizing);
-  EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
-  EXPECT_EQ(rep.delaunay_violations, 0u);
-  EXPECT_EQ(rep.area_violations, 0u);
-  EXPECT_EQ(st.interface_splits, 0u);
-  EXPECT_EQ(st.shield_splits, 0u);
-  return m;
-}
-
-/// ../shared/data/bahamas_islands.poly, or empty when the shared data is absent.
-std::filesystem::path bahamas_path() {
-  const auto dir = pdd::test::shared_data_dir();
-  if (dir.empty() || !std::filesystem::exists(dir / "bahamas_islands.poly")) return {};
-  return dir / "bahamas_islands.poly";
-}
-
-} // namespace
+using pdd::test::bahamas_path;
+using pdd::test::mesh_verified;
 
 TEST(LongGeometric, BahamasAutomaticVerifiedAndThreadIndependent) {
   const std::filesystem::path path = bahamas_path();
