@@ -98,8 +98,9 @@ struct generate_options {
   /// max_area = criteria.max_area. Leave max_subdomain_triangles, min_subdomains and max_area
   /// at their defaults (check_generate_options).
   gradation_options gradation{};
-  /// N, the number of subdomains. 0: automatic (pdd::automatic_subdomains); 1: the kernel
-  /// meshes the whole domain at once (no decomposition).
+  /// N, the number of subdomains. 0: automatic (pdd::automatic_subdomains, which grows with
+  /// `threads`: the mesh is bitwise the same for every thread count only for a given N); 1:
+  /// the kernel meshes the whole domain at once (no decomposition).
   std::size_t subdomains = 0;
   /// Threads of every stage; 0: all cores.
   unsigned threads = 0;
