@@ -120,8 +120,13 @@ pdd::pslg read_input(const pdd::triangle::file_names& f, const pdd::triangle::sw
   return sw.poly ? pdd::read_poly(f.poly) : pdd::read_node(f.in_node);
 }
 
-/// Triangle's warning for every input vertex equal to an earlier one (without -p).
-void warn_duplicates(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
+/// Triangle's warning for every input vertex equal to an earlier one (without -p), and a
+/// warning that vertex attributes are not carried to the output.
+void input_warnings(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
+  if (in.vertex_attribute_count > 0)
+    std::printf("Warning:  the input's %zu vertex attribute(s) per vertex are not written: pdd "
+                "does not interpolate vertex attributes.\n",
+                in.vertex_attribute_count);
   for (const auto& d : t.duplicate_vertices)
     std::printf("Warning:  A duplicate vertex at %s appeared and was ignored (vertex %zu is "
                 "vertex %zu).\n",
@@ -166,7 +171,7 @@ int run(const cli_options& o) {
                                       : "Constructing Delaunay triangulation (CGAL).\n");
   const auto tm = std::chrono::steady_clock::now();
   const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
-  if (!sw.quiet) warn_duplicates(in, t);
+  if (!sw.quiet) input_warnings(in, t);
   if (!sw.quiet) report_meshing(t, ms_since(tm));
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {

@@ -195,6 +195,12 @@ TEST(PddTriangle, VertexSetEdgesVoronoiAndHull) {
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(first_line(dir / "pts.1.edge"), "8 0");
   EXPECT_EQ(second_line(dir / "pts.1.edge").substr(0, 2), "0 ");
+  // vertex attributes are not carried to the output, and pdd says so
+  pdd::test::write_text(dir / "att.node", "4 2 1 0\n1 0 0 5\n2 1 0 6\n3 1 1 7\n4 0 1 8\n");
+  r = run_in(dir, "-e att");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 vertex attribute(s) per vertex are not written"), std::string::npos)
+      << r.output;
   // a quality mesh of the hull, every input vertex kept
   r = run_in(dir, "-qa0.01 pts");
   ASSERT_EQ(r.code, 0) << r.output;

@@ -29,9 +29,8 @@ struct refused_switches {
 };
 
 inline constexpr refused_switches refusal_reasons[] = {
-    {"r", " (refine a previous mesh) is not supported: pdd meshes PSLGs whose vertices all lie "
-          "on segment loops, and a mesh's interior vertices do not; mesh the original .poly with "
-          "the finer switches instead"},
+    {"r", " (refine a previous mesh) is not supported: pdd does not read a previous mesh's "
+          ".ele or .area; mesh the original .poly (or .node) with the finer switches instead"},
     {"D", " (conforming Delaunay) is not supported: pdd's meshes are constrained Delaunay"},
     {"u", " (a user-defined triunsuitable test) is not supported"},
     {"wW", " (weighted Delaunay) is not supported"},
