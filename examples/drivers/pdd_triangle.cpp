@@ -63,18 +63,26 @@ void print_quality(const pdd::triangle_mesh& m) {
   std::printf("\n");
 }
 
-/// Triangle's closing statistics block.
-void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
+/// Triangle's closing statistics block (segments and holes with -p only; the mesh vertices
+/// without the ignored duplicates of a vertex set, as Triangle counts them).
+void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t,
+                      const pdd::triangle::switches& sw) {
   const auto nb = t.neighbors.empty() ? pdd::triangle_neighbors(t.mesh) : t.neighbors;
   const auto e = pdd::triangle::detail::count_edges(nb);
   std::printf("\nStatistics:\n\n  Input vertices: %zu\n", in.vertices.size());
-  std::printf("  Input segments: %zu\n", in.segments.size());
-  std::printf("  Input holes: %zu\n", in.holes.size());
-  std::printf("\n  Mesh vertices: %zu\n  Mesh triangles: %zu\n", t.mesh.vertices.size(),
+  if (sw.poly) {
+    std::printf("  Input segments: %zu\n", in.segments.size());
+    std::printf("  Input holes: %zu\n", in.holes.size());
+  }
+  const std::size_t ignored = sw.jettison ? 0 : t.duplicate_vertices.size();
+  std::printf("\n  Mesh vertices: %zu\n  Mesh triangles: %zu\n", t.mesh.vertices.size() - ignored,
               t.mesh.triangles.size());
   std::printf("  Mesh edges: %zu\n  Mesh exterior boundary edges: %zu\n", e.edges, e.boundary);
-  std::printf("  Mesh interior boundary edges: %zu\n", t.mesh.segments.size() - e.boundary);
-  std::printf("  Mesh subsegments (constrained edges): %zu\n\n", t.mesh.segments.size());
+  if (sw.poly) {
+    std::printf("  Mesh interior boundary edges: %zu\n", t.mesh.segments.size() - e.boundary);
+    std::printf("  Mesh subsegments (constrained edges): %zu\n", t.mesh.segments.size());
+  }
+  std::printf("\n");
 }
 
 /// How long meshing took, in how many subdomains, and how the pipeline read the domain.
@@ -176,7 +184,7 @@ int run(const cli_options& o) {
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {
     std::printf("\nTotal running milliseconds:  %.0f\n", ms_since(t0));
-    print_statistics(in, t);
+    print_statistics(in, t, sw);
     if (sw.verbose > 0) print_quality(t.mesh);
   }
   return ok;

@@ -166,7 +166,8 @@ TEST(PddTriangle, VertexSetEdgesVoronoiAndHull) {
   ASSERT_EQ(r.code, 0) << r.output;
   for (const char* s : {"Opening pts.node.", "Writing pts.1.edge.", "Writing pts.1.v.node.",
                         "Writing pts.1.v.edge.", "Writing pts.1.poly.",
-                        "A duplicate vertex at (0.5, 0.5) appeared and was ignored"})
+                        "A duplicate vertex at (0.5, 0.5) appeared and was ignored",
+                        "Input vertices: 6\n\n  Mesh vertices: 5\n", "Mesh edges: 8\n"})
     EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
   EXPECT_EQ(first_line(dir / "pts.1.node"), "6 2 0 1");
   EXPECT_EQ(first_line(dir / "pts.1.ele"), "4 3 0");
@@ -184,6 +185,7 @@ TEST(PddTriangle, VertexSetEdgesVoronoiAndHull) {
     rays += w == "-1";
   }
   EXPECT_EQ(rays, 4u);
+  EXPECT_EQ(r.output.find("Input segments"), std::string::npos); // Triangle prints none here
   // the hull as the .poly's segments, over the .node's vertices: 4 segments of marker 1
   const pdd::pslg hull = pdd::read_poly(dir / "pts.1.poly");
   EXPECT_EQ(hull.vertices.size(), 6u);
