@@ -24,11 +24,15 @@ inline void warn(const std::string& message) {
   if (PyErr_WarnEx(PyExc_UserWarning, message.c_str(), 1) != 0) throw py::error_already_set();
 }
 
-/// Triangle's warning for every input vertex equal to an earlier one (a vertex set).
+/// Triangle's warning about input vertices equal to earlier ones (a vertex set): one warning
+/// naming the first, with the count.
 inline void warn_duplicates(const triangle::triangulation& t) {
-  for (const auto& d : t.duplicate_vertices)
-    warn("vertex " + std::to_string(d[0]) + " duplicates vertex " + std::to_string(d[1]) +
-         " and was ignored (as Triangle ignores it): no triangle uses it");
+  const auto& d = t.duplicate_vertices;
+  if (d.empty()) return;
+  warn("vertex " + std::to_string(d[0][0]) + " duplicates vertex " + std::to_string(d[0][1]) +
+       (d.size() > 1 ? " (and " + std::to_string(d.size() - 1) + " more vertices duplicate others)"
+                     : std::string()) +
+       ": ignored as Triangle ignores them, no triangle uses them");
 }
 
 /// A new C-contiguous (rows, cols) array, element (r, c) = value(r, c).

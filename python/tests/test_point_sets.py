@@ -81,8 +81,10 @@ def test_delaunay_of_integer_points_is_exactly_delaunay():
     pts = rng.integers(0, 60, size=(400, 2))  # duplicates and cocircular quadruples
     distinct = {}
     first = [distinct.setdefault(tuple(q), i) for i, q in enumerate(pts.tolist())]
-    with pytest.warns(UserWarning, match="duplicates vertex"):
+    dups = sum(1 for i, f in enumerate(first) if f != i)
+    with pytest.warns(UserWarning, match=f"duplicates vertex .*and {dups - 1} more") as caught:
         t = pdd.delaunay(pts.astype(float))
+    assert len(caught) == 1  # one warning, not one per duplicate
     used = set(t.ravel().tolist())
     assert used == {i for i, f in enumerate(first) if f == i}  # every distinct point, no duplicate
     a, b, c = pts[t[:, 0]], pts[t[:, 1]], pts[t[:, 2]]
@@ -176,6 +178,11 @@ def test_convex_hull_of_a_pslg_and_unread_keys():
     assert "segments" not in out
     with pytest.warns(UserWarning):
         assert len(pdd.triangulate(ell, "c")["segments"]) == 5  # the hull (2,1)-(1,2) cuts the notch
+    # a quality mesh of a vertex set with c: the hull's pieces as segments, marker 1
+    out = pdd.triangulate({"vertices": ell["vertices"]}, "cqa0.05")
+    assert (out["segment_markers"] == 1).all() and len(out["segments"]) > 5
+    use = edge_count(out["triangles"])
+    assert {tuple(sorted(s)) for s in out["segments"].tolist()} == {k for k, n in use.items() if n == 1}
 
 
 @pytest.mark.parametrize("points, message", [
