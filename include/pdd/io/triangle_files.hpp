@@ -1,6 +1,7 @@
 /// \file triangle_files.hpp
 /// Triangle's mesh output formats for a pdd::triangle_mesh: .node (vertices), .ele
-/// (triangles) and a .poly holding the mesh's boundary segments over the .node's vertices.
+/// (triangles) and a .poly holding the mesh's boundary segments over the .node's vertices;
+/// .neigh, .edge (switch e) and a Voronoi diagram's .v.node and .v.edge (switch v).
 /// Formats: https://www.cs.cmu.edu/~quake/triangle.node.html, triangle.ele.html.
 #pragma once
 
