@@ -3,6 +3,7 @@
 // (pdd::verify with its defaults).
 #include "arrays.hpp"
 #include "sizing.hpp"
+#include "triangle_functions.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
@@ -68,24 +69,22 @@ pslg pslg_from_dict(const py::dict& tri) {
   return g;
 }
 
-/// pdd.triangulate(tri, opts): see the docstring below.
-py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned threads,
-                     std::size_t subdomains) {
-  const triangle::switches sw = triangle::parse_switches(opts);
-  pslg g = pslg_from_dict(tri);
+/// Without p Triangle reads only the vertices: say so when the dict holds more.
+void warn_unread_keys(const py::dict& tri, const triangle::switches& sw) {
+  if (sw.poly) return;
+  for (const char* key : {"segments", "holes", "regions"})
+    if (tri.contains(key) && py::len(tri[key]) > 0)
+      warn(std::string("'") + key +
+           "' are not read without switch p: the vertices are triangulated (as Triangle does)");
+}
+
+/// The dict pdd.triangulate returns (the `triangle` package's keys for the switches).
+py::dict triangulate_result(const py::dict& tri, const triangle::switches& sw,
+                            triangle::triangulation& t) {
   auto owner = std::make_unique<mesh_owner>();
-  {
-    py::gil_scoped_release release;
-    triangle::triangulation t = triangle::triangulate(g, sw, {threads, subdomains});
-    owner->mesh = std::move(t.mesh);
-    owner->attributes = std::move(t.triangle_attributes);
-    owner->neighbors = std::move(t.neighbors);
-  }
-  if (sw.verbose > 0) { // Triangle's library prints its statistics for V; the summary here
-    const mesh_statistics q = compute_statistics(owner->mesh);
-    py::print("pdd.triangulate:", q.vertices, "vertices,", q.triangles, "triangles, angles",
-              q.min_angle_deg, "to", q.max_angle_deg, "degrees, largest area", q.max_area);
-  }
+  owner->mesh = std::move(t.mesh);
+  owner->attributes = std::move(t.triangle_attributes);
+  owner->neighbors = std::move(t.neighbors);
   mesh_views v(std::move(owner));
   py::dict out;
   const bool markers = !sw.no_boundary_markers;
@@ -94,15 +93,37 @@ py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned thre
     if (markers) out["vertex_markers"] = v.ints(v.data().mesh.vertex_markers, true);
   }
   if (!sw.no_ele) out["triangles"] = v.triangles();
-  if (!sw.no_poly) {
+  if ((sw.poly || sw.convex) && !sw.no_poly) {
     out["segments"] = v.segments();
     if (markers) out["segment_markers"] = v.segment_markers(true);
   }
-  if (tri.contains("holes")) out["holes"] = tri["holes"];
-  if (tri.contains("regions")) out["regions"] = tri["regions"];
+  if (sw.poly && tri.contains("holes")) out["holes"] = tri["holes"];
+  if (sw.poly && tri.contains("regions")) out["regions"] = tri["regions"];
   if (sw.regional_attributes) out["triangle_attributes"] = v.attributes();
   if (sw.neighbors) out["neighbors"] = v.neighbors();
+  if (sw.edges) add_edges(out, t.edges, markers);
+  if (sw.voronoi) out["voronoi"] = voronoi_dict(t.voronoi);
   return out;
+}
+
+/// pdd.triangulate(tri, opts): see the docstring below.
+py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned threads,
+                     std::size_t subdomains) {
+  const triangle::switches sw = triangle::parse_switches(opts);
+  pslg g = pslg_from_dict(tri);
+  warn_unread_keys(tri, sw);
+  triangle::triangulation t;
+  {
+    py::gil_scoped_release release;
+    t = triangle::triangulate(std::move(g), sw, {threads, subdomains});
+  }
+  warn_duplicates(t);
+  if (sw.verbose > 0) { // Triangle's library prints its statistics for V; the summary here
+    const mesh_statistics q = compute_statistics(t.mesh);
+    py::print("pdd.triangulate:", q.vertices, "vertices,", q.triangles, "triangles, angles",
+              q.min_angle_deg, "to", q.max_angle_deg, "degrees, largest area", q.max_area);
+  }
+  return triangulate_result(tri, sw, t);
 }
 
 /// generate_statistics (and the mesh's quality) as a dict.
@@ -287,13 +308,21 @@ PYBIND11_MODULE(pdd, m) {
 
 tri: dict with 'vertices' (n, 2) and optionally 'vertex_markers', 'segments' (m, 2),
 'segment_markers', 'holes' (h, 2), 'regions' (r, 4: x, y, attribute, max_area).
-opts: Triangle switches: p (required), q[angle], a[area], a (regional areas), A, Q, V (prints a
-summary), N, E, P, B, O, z, j, n; I is accepted and means nothing without files. Numbering is zero-based (the triangle package's 'z'). Any other switch,
-unknown key, 'vertex_attributes' or 'triangles' raises ValueError.
-Returns a dict: vertices, vertex_markers (n, 1), triangles (t, 3) int32, segments,
-segment_markers, holes and regions (copied), triangle_attributes (with A), neighbors (with n,
--1 on the boundary). Arrays are views of pdd's mesh (no copy). pdd's keywords: threads (0:
-all cores), subdomains (0: automatic).)");
+opts: Triangle switches: p (mesh the PSLG; without p the vertices are a vertex set: their
+Delaunay triangulation, or with q/a a quality mesh of their convex hull; segments, holes and
+regions are then not read, with a warning), q[angle], a[area], a (regional areas), A, c (convex
+hull: with p the hull is meshed, without p its edges are the segments), e (edges), v (Voronoi
+diagram), Q, V (prints a summary), N, E, P, B, O, z, j, n; I is accepted and means nothing
+without files. Numbering is zero-based (the triangle package's 'z'). Any other switch, unknown
+key, 'vertex_attributes' or 'triangles' raises ValueError. A vertex equal to an earlier one
+(without p) is ignored with a UserWarning, as Triangle ignores it.
+Returns a dict: vertices, vertex_markers (n, 1), triangles (t, 3) int32, segments and
+segment_markers (with p or c), holes and regions (copied, with p), triangle_attributes (with A),
+neighbors (with n, -1 on the boundary), edges (e, 2) and edge_markers (e, 1) int32 (with e),
+voronoi (with v: a dict of vertices, edges, ray_origins, ray_directions as pdd.voronoi returns
+them). Mesh arrays are views of pdd's mesh (no copy). pdd's keywords: threads (0: all cores),
+subdomains (0: automatic).)");
+  def_triangle_functions(m);
   m.def("mesh", &mesh, "vertices"_a, "segments"_a, "holes"_a = py::none(), "min_angle"_a = 20.7,
         "max_area"_a = py::none(), "sizing"_a = py::none(), "sizing_bounds"_a = py::none(),
         "subdomains"_a = 0, "threads"_a = 0, "kernel"_a = "cgal", "vertex_markers"_a = py::none(),

@@ -5,8 +5,9 @@
 //   pdd-triangle [-SWITCHES ...] INPUT[.poly] [--threads T] [--subdomains N]
 //
 // Switches (Triangle 1.6's letters; pdd::triangle::parse_switches): p, q[angle], a[area],
-// a (regional area bounds), A, Q, V, N, E, P, B, I, O, z, j, n. Every other switch (-r
-// among them: pdd cannot refine a previous mesh) is refused by name.
+// a (regional area bounds), A, c, e, v, Q, V, N, E, P, B, I, O, z, j, n. Without p (and a .poly
+// name) the input is a vertex set, NAME.node. Every other switch (-r among them: pdd cannot
+// refine a previous mesh) is refused by name.
 // Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 4 internal error.
 #include <pdd/errors.hpp>
 #include <pdd/io/poly.hpp>
@@ -62,18 +63,43 @@ void print_quality(const pdd::triangle_mesh& m) {
   std::printf("\n");
 }
 
-/// Triangle's closing statistics block.
-void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
+/// Triangle's closing statistics block (segments and holes with -p only; the mesh vertices
+/// without the ignored duplicates of a vertex set, as Triangle counts them).
+void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t,
+                      const pdd::triangle::switches& sw) {
   const auto nb = t.neighbors.empty() ? pdd::triangle_neighbors(t.mesh) : t.neighbors;
   const auto e = pdd::triangle::detail::count_edges(nb);
   std::printf("\nStatistics:\n\n  Input vertices: %zu\n", in.vertices.size());
-  std::printf("  Input segments: %zu\n", in.segments.size());
-  std::printf("  Input holes: %zu\n", in.holes.size());
-  std::printf("\n  Mesh vertices: %zu\n  Mesh triangles: %zu\n", t.mesh.vertices.size(),
+  if (sw.poly) {
+    std::printf("  Input segments: %zu\n", in.segments.size());
+    std::printf("  Input holes: %zu\n", in.holes.size());
+  }
+  const std::size_t ignored = sw.jettison ? 0 : t.duplicate_vertices.size();
+  std::printf("\n  Mesh vertices: %zu\n  Mesh triangles: %zu\n", t.mesh.vertices.size() - ignored,
               t.mesh.triangles.size());
   std::printf("  Mesh edges: %zu\n  Mesh exterior boundary edges: %zu\n", e.edges, e.boundary);
-  std::printf("  Mesh interior boundary edges: %zu\n", t.mesh.segments.size() - e.boundary);
-  std::printf("  Mesh subsegments (constrained edges): %zu\n\n", t.mesh.segments.size());
+  if (sw.poly) {
+    std::printf("  Mesh interior boundary edges: %zu\n", t.mesh.segments.size() - e.boundary);
+    std::printf("  Mesh subsegments (constrained edges): %zu\n", t.mesh.segments.size());
+  }
+  std::printf("\n");
+}
+
+/// How long meshing took, in how many subdomains, and how the pipeline read the domain.
+void report_meshing(const pdd::triangle::triangulation& t, double ms) {
+  if (t.runs.empty()) { // a vertex set without q or a: its Delaunay triangulation
+    std::printf("Delaunay milliseconds:  %.0f\n\n", ms);
+    return;
+  }
+  std::size_t n = 0;
+  for (const auto& r : t.runs)
+    n += r.subdomains;
+  std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms, n);
+  if (t.runs.front().general_domain)
+    std::printf("The domain is not one of closed loops (internal or dangling segments, "
+                "isolated vertices, touching loops or internal boundaries): %s.\n",
+                n > 1 ? "decoupled from its faces, the segments between faces as interfaces"
+                      : "meshed whole");
 }
 
 /// Writes one output file (or says it does not) as Triangle reports it.
@@ -88,18 +114,31 @@ void output(const std::string& name, const char* not_written, bool quiet, Write 
 }
 
 /// The switches of all single-dash arguments, in order.
-/// \throws switch_error for a refused switch or without -p (or a .poly input).
+/// \throws switch_error for a refused switch.
 pdd::triangle::switches read_switches(const cli_options& o) {
   pdd::triangle::switches sw;
   for (const std::string& a : o.switch_args)
     sw = pdd::triangle::parse_switches(a, sw);
-  pdd::triangle::switches probe = sw;
-  (void)pdd::triangle::make_file_names(o.input, probe); // sets p for a .poly input
-  if (!probe.poly)
-    throw pdd::triangle::switch_error("switch -p is required (or a .poly input): pdd meshes the "
-                                      "domain enclosed by segments, not the convex hull of a "
-                                      ".node file");
   return sw;
+}
+
+/// The input: the .poly with -p, else the .node (a vertex set).
+pdd::pslg read_input(const pdd::triangle::file_names& f, const pdd::triangle::switches& sw) {
+  if (!sw.quiet) std::printf("Opening %s.\n", (sw.poly ? f.poly : f.in_node).c_str());
+  return sw.poly ? pdd::read_poly(f.poly) : pdd::read_node(f.in_node);
+}
+
+/// Triangle's warning for every input vertex equal to an earlier one (without -p), and a
+/// warning that vertex attributes are not carried to the output.
+void input_warnings(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
+  if (in.vertex_attribute_count > 0)
+    std::printf("Warning:  the input's %zu vertex attribute(s) per vertex are not written: pdd "
+                "does not interpolate vertex attributes.\n",
+                in.vertex_attribute_count);
+  for (const auto& d : t.duplicate_vertices)
+    std::printf("Warning:  A duplicate vertex at %s appeared and was ignored (vertex %zu is "
+                "vertex %zu).\n",
+                pdd::to_string(in.vertices[d[0]]).c_str(), std::size_t{d[0]}, std::size_t{d[1]});
 }
 
 /// Writes the .node, .ele, .poly and .neigh files the switches ask for.
@@ -113,12 +152,18 @@ void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::swit
          [&](const std::string& p) { pdd::write_node(p, t.mesh, fmt); });
   output(f.ele, "an .ele file", sw.quiet,
          [&](const std::string& p) { pdd::write_ele(p, t.mesh, fmt, t.triangle_attributes); });
-  output(f.out_poly, "a .poly file", sw.quiet,
-         [&](const std::string& p) { pdd::write_mesh_poly(p, t.mesh, fmt, in.holes); });
-  if (!f.neigh.empty()) {
-    if (!sw.quiet) std::printf("Writing %s.\n", f.neigh.c_str());
-    pdd::write_neigh(f.neigh, t.neighbors, fmt);
-  }
+  if (sw.poly || sw.convex) // Triangle writes segments only for a PSLG or with c
+    output(f.out_poly, "a .poly file", sw.quiet,
+           [&](const std::string& p) { pdd::write_mesh_poly(p, t.mesh, fmt, in.holes); });
+  const auto also = [&sw](const std::string& name) {
+    if (!name.empty() && !sw.quiet) std::printf("Writing %s.\n", name.c_str());
+    return !name.empty();
+  };
+  if (also(f.neigh)) pdd::write_neigh(f.neigh, t.neighbors, fmt);
+  if (also(f.edge)) pdd::write_edge(f.edge, t.edges, fmt);
+  if (also(f.v_node) && also(f.v_edge))
+    pdd::write_voronoi(f.v_node, f.v_edge, t.voronoi.vertices, t.voronoi.edges,
+                       t.voronoi.directions, fmt);
 }
 
 int run(const cli_options& o) {
@@ -126,28 +171,20 @@ int run(const cli_options& o) {
   pdd::triangle::switches sw = read_switches(o);
   pdd::triangle::switches probe = sw;
   const std::string base = pdd::triangle::make_file_names(o.input, probe).base; // sets p
-  const bool node_read = std::filesystem::exists(base + ".node");
+  const bool node_read = !probe.poly || std::filesystem::exists(base + ".node");
   const pdd::triangle::file_names f = pdd::triangle::make_file_names(o.input, sw, node_read);
-  if (!sw.quiet) std::printf("Opening %s.\n", f.poly.c_str());
-  const pdd::pslg in = pdd::read_poly(f.poly);
-  if (!sw.quiet) std::printf("Meshing with pdd's decoupled pipeline.\n");
+  const pdd::pslg in = read_input(f, sw);
+  if (!sw.quiet)
+    std::printf(sw.poly || sw.quality ? "Meshing with pdd's decoupled pipeline.\n"
+                                      : "Constructing Delaunay triangulation (CGAL).\n");
   const auto tm = std::chrono::steady_clock::now();
   const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
-  if (!sw.quiet) {
-    std::size_t n = 0;
-    for (const auto& r : t.runs)
-      n += r.subdomains;
-    std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms_since(tm), n);
-    if (!t.runs.empty() && t.runs.front().general_domain)
-      std::printf("The domain is not one of closed loops (internal or dangling segments, "
-                  "isolated vertices, touching loops or internal boundaries): %s.\n",
-                  n > 1 ? "decoupled from its faces, the segments between faces as interfaces"
-                        : "meshed whole");
-  }
+  if (!sw.quiet) input_warnings(in, t);
+  if (!sw.quiet) report_meshing(t, ms_since(tm));
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {
     std::printf("\nTotal running milliseconds:  %.0f\n", ms_since(t0));
-    print_statistics(in, t);
+    print_statistics(in, t, sw);
     if (sw.verbose > 0) print_quality(t.mesh);
   }
   return ok;
@@ -198,14 +235,18 @@ int main(int argc, char** argv) {
       rest.push_back(a);
   }
   CLI::App app{"pdd-triangle: Triangle's command line (switches -pq30a0.01 ...), meshed by pdd"};
-  app.add_option("input", o.input, "input: NAME.poly, or NAME with -p")->required();
+  app.add_option("input", o.input,
+                 "input: NAME.poly, or NAME with -p; NAME or NAME.node without -p (a vertex set)")
+      ->required();
   app.add_option("--subdomains", o.run.subdomains,
                  "number of subdomains (1: monolithic kernel; default: automatic)")
       ->check(CLI::Range(std::size_t{1}, std::size_t{1} << 20));
   app.add_option("--threads", o.run.threads, "threads (default: all cores)")
       ->check(CLI::Range(1u, 4096u));
-  app.footer("Switches: p q[angle] a[area] a A Q V N E P B I O z j n (Triangle 1.6's meaning). "
-             "Any other switch is refused.");
+  app.footer("Switches (Triangle 1.6's meaning): p (mesh a PSLG; without it the input is a "
+             "vertex set, triangulated), q[angle], a[area], a (regional areas), A, c (convex "
+             "hull), e (.edge), v (Voronoi: .v.node, .v.edge), Q, V, N, E, P, B, I, O, z, j, n. "
+             "Refused, with the reason: r D u w W o Y S g i F l s L C X.");
   try {
     std::vector<const char*> args;
     for (const std::string& a : rest)

@@ -84,11 +84,11 @@ def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
 
 
 @pytest.mark.parametrize("opts, message", [
-    ("pqc", "switch -c"),
+    ("pqD", "switch -D"),
     ("pq30r", "switch -r"),
-    ("a2.6e-7", "switch -e"),
+    ("a2.6e-7", "no exponent"),
     ("pa0", "greater than zero"),
-    ("q", "switch -p is required"),
+    ("pqY", "switch -Y"),
 ])
 def test_refused_switches(opts, message):
     with pytest.raises(ValueError, match=message.replace("-", "\\-")):

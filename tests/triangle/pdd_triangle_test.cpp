@@ -9,11 +9,14 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace pdd_triangle_test {
 namespace fs = std::filesystem;
@@ -140,7 +143,7 @@ TEST(PddTriangle, RefusesWhatItCannotDo) {
   for (const refusal& c :
        {refusal{"-pqY key.poly", "switch -Y", 2},
         refusal{"-rpq key.1", "switch -r (refine a previous mesh)", 2},
-        refusal{"-q key.node", "switch -p is required", 2},
+        refusal{"-q key.node", "cannot open 'key.node'", 1},
         refusal{"-pq key.1.ele", "refining a previous mesh", 2},
         refusal{"-pa0 key.poly", "greater than zero", 2},
         refusal{"-pq missing.poly", "missing.poly", 1}, refusal{"-pq", "input is required", 2},
@@ -150,6 +153,78 @@ TEST(PddTriangle, RefusesWhatItCannotDo) {
     EXPECT_NE(r.output.find(c.message), std::string::npos) << c.args << "\n" << r.output;
   }
   EXPECT_FALSE(fs::exists(dir / "key.1.node")); // nothing written by a refused run
+}
+
+TEST(PddTriangle, VertexSetEdgesVoronoiAndHull) {
+  const fs::path dir = pdd::test::fresh_dir("pt_points");
+  // Triangle 1.6's example of the `triangle` package: four corners and the centre, which
+  // Triangle triangulates into 4 triangles, 8 edges (4 on the hull), 4 Voronoi vertices and 4
+  // rays; a duplicate of the centre is ignored with Triangle's warning.
+  pdd::test::write_text(dir / "pts.node", "6 2 0 0\n1 0 0\n2 0 1\n3 0.5 0.5\n4 1 1\n5 1 0\n"
+                                          "6 0.5 0.5\n");
+  auto r = run_in(dir, "-cev pts");
+  ASSERT_EQ(r.code, 0) << r.output;
+  for (const char* s : {"Opening pts.node.", "Writing pts.1.edge.", "Writing pts.1.v.node.",
+                        "Writing pts.1.v.edge.", "Writing pts.1.poly.",
+                        "A duplicate vertex at (0.5, 0.5) appeared and was ignored",
+                        "Input vertices: 6\n\n  Mesh vertices: 5\n", "Mesh edges: 8\n"})
+    EXPECT_NE(r.output.find(s), std::string::npos) << s << "\n" << r.output;
+  EXPECT_EQ(first_line(dir / "pts.1.node"), "6 2 0 1");
+  EXPECT_EQ(first_line(dir / "pts.1.ele"), "4 3 0");
+  EXPECT_EQ(first_line(dir / "pts.1.edge"), "8 1");
+  EXPECT_EQ(first_line(dir / "pts.1.v.node"), "4 2 0 0");
+  EXPECT_EQ(first_line(dir / "pts.1.v.edge"), "8 0");
+  std::ifstream vedge(dir / "pts.1.v.edge");
+  std::string line;
+  std::getline(vedge, line); // the header
+  std::size_t rays = 0;
+  while (std::getline(vedge, line)) { // <id> <v> -1 <dx> <dy>: a ray
+    std::istringstream fields(line);
+    std::string id, v, w;
+    fields >> id >> v >> w;
+    rays += w == "-1";
+  }
+  EXPECT_EQ(rays, 4u);
+  EXPECT_EQ(r.output.find("Input segments"), std::string::npos); // Triangle prints none here
+  // the hull as the .poly's segments, over the .node's vertices: 4 segments of marker 1
+  const pdd::pslg hull = pdd::read_poly(dir / "pts.1.poly");
+  EXPECT_EQ(hull.vertices.size(), 6u);
+  ASSERT_EQ(hull.segments.size(), 4u);
+  for (const auto& s : hull.segments)
+    EXPECT_EQ(s.marker, 1);
+  // B and z: no marker column, numbering from 0; no .poly without c
+  r = run_in(dir, "-QBze pts.node");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_EQ(first_line(dir / "pts.1.edge"), "8 0");
+  EXPECT_EQ(second_line(dir / "pts.1.edge").substr(0, 2), "0 ");
+  // vertex attributes are not carried to the output, and pdd says so
+  pdd::test::write_text(dir / "att.node", "4 2 1 0\n1 0 0 5\n2 1 0 6\n3 1 1 7\n4 0 1 8\n");
+  r = run_in(dir, "-e att");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 vertex attribute(s) per vertex are not written"), std::string::npos)
+      << r.output;
+  // a quality mesh of the hull, every input vertex kept
+  r = run_in(dir, "-qa0.01 pts");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const pdd::pslg mesh_nodes = pdd::read_node(dir / "pts.1.node");
+  EXPECT_GT(mesh_nodes.vertices.size(), 6u);
+  for (const pdd::point p : std::vector<pdd::point>{{0, 0}, {0, 1}, {0.5, 0.5}, {1, 1}, {1, 0}})
+    EXPECT_NE(std::find(mesh_nodes.vertices.begin(), mesh_nodes.vertices.end(), p),
+              mesh_nodes.vertices.end());
+}
+
+TEST(PddTriangle, VertexSetErrors) {
+  const fs::path dir = pdd::test::fresh_dir("pt_points_bad");
+  pdd::test::write_text(dir / "line.node", "3 2 0 0\n1 0 0\n2 1 1\n3 2 2\n");
+  pdd::test::write_text(dir / "two.node", "2 2 0 0\n1 0 0\n2 1 1\n");
+  pdd::test::write_text(dir / "bad.node", "3 2 0 0\n1 0 0\n2 1 x\n3 2 2\n");
+  for (const auto& [args, message] :
+       {std::pair{"line", "collinear"}, std::pair{"-v two.node", "at least three distinct"},
+        std::pair{"bad", "bad.node:3"}, std::pair{"-pc line", "line.poly"}}) {
+    const auto r = run_in(dir, args);
+    EXPECT_EQ(r.code, 1) << args << "\n" << r.output;
+    EXPECT_NE(r.output.find(message), std::string::npos) << args << "\n" << r.output;
+  }
 }
 
 } // namespace pdd_triangle_test

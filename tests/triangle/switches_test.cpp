@@ -39,9 +39,10 @@ TEST(Switches, BareQIsTwentyDegreesAndNoQIsZero) {
 }
 
 TEST(Switches, NumbersStopAtTheFirstOtherCharacter) {
-  // Triangle reads only digits and '.': a2.6e-7 is a = 2.6, then e (refused).
+  // Triangle reads only digits and '.': a2.6e-7 would be a = 2.6, then e, - and 7 (refused as
+  // an exponent).
   EXPECT_EQ(parse_switches("a0.00000026").max_area, 0.00000026);
-  EXPECT_NE(refusal("a2.6e-7").find("switch -e"), std::string::npos);
+  EXPECT_NE(refusal("a2.6e-7").find("switch -a2.6e-"), std::string::npos);
   const auto s = parse_switches("q25.5Aa");
   EXPECT_EQ(s.min_angle_deg, 25.5);
   EXPECT_TRUE(s.regional_attributes);
@@ -57,7 +58,9 @@ TEST(Switches, AreaWithAndWithoutNumber) {
 }
 
 TEST(Switches, EveryFlag) {
-  const auto s = parse_switches("pAQVVNEPBOzjn");
+  const auto s = parse_switches("pAQVVNEPBOzjncev");
+  EXPECT_TRUE(s.convex && s.edges && s.voronoi);
+  EXPECT_EQ(pdd::triangle::to_string(s), "pcAQVVNEPBOzjnev");
   EXPECT_TRUE(s.poly && s.regional_attributes && s.quiet);
   EXPECT_EQ(s.verbose, 2u);
   EXPECT_TRUE(s.no_node && s.no_ele && s.no_poly && s.no_boundary_markers);
@@ -68,20 +71,26 @@ TEST(Switches, EveryFlag) {
 }
 
 TEST(Switches, RefusesUnsupportedSwitchesByName) {
-  for (const char c : std::string("rcDuwWoYSevgiFlsLCXhH?x7%")) {
+  for (const char c : std::string("rDuwWoYSgiFlsLCXhH?x7%")) {
     const std::string msg = refusal(std::string("p") + c);
     EXPECT_NE(msg.find(std::string("switch -") + c), std::string::npos) << msg;
   }
   EXPECT_NE(refusal("rpq").find("refine a previous mesh"), std::string::npos);
-  EXPECT_NE(refusal("pc").find("convex hull"), std::string::npos);
+  EXPECT_NE(refusal("pg").find("OFF"), std::string::npos);
   EXPECT_NE(refusal("pY").find("boundary"), std::string::npos);
-  EXPECT_NE(refusal("pk").find("supported: p q a A Q V N E P B I O z j n"), std::string::npos);
+  EXPECT_NE(refusal("pk").find("supported: p q a A c e v Q V N E P B I O z j n"),
+            std::string::npos);
 }
 
 TEST(Switches, RefusesBadNumbers) {
   EXPECT_NE(refusal("a0").find("greater than zero"), std::string::npos);
   EXPECT_NE(refusal("a.").find("'.' is not a number"), std::string::npos);
   EXPECT_NE(refusal("q1.2.3").find("switch -q1.2.3"), std::string::npos);
+  // an exponent is refused (Triangle would read a2.6, then e, - and 7), e after a number is not
+  EXPECT_NE(refusal("pa2.6e-7").find("no exponent"), std::string::npos);
+  EXPECT_NE(refusal("pq30E5").find("switch -q30E5"), std::string::npos);
+  EXPECT_TRUE(parse_switches("pa0.5e").edges);
+  EXPECT_TRUE(parse_switches("pq30ev").voronoi);
   EXPECT_NE(refusal("--p").find("switch --"), std::string::npos);
   // switches accumulate over several arguments, as Triangle reads them
   const auto s = parse_switches("-a0.5", parse_switches("-pq30"));

@@ -148,14 +148,14 @@ TEST(Triangulate, NeighborsAreSymmetricAndAcrossFromTheVertex) {
   EXPECT_EQ(boundary, t.mesh.segments.size()); // every boundary edge is a subsegment
 }
 
-TEST(Triangulate, RefusesWithoutPAndMeshesHolesWithO) {
+TEST(Triangulate, WithoutPTheVerticesAreTriangulatedAndOMeshesHoles) {
   const pdd::pslg g = two_squares();
-  try {
-    tri::triangulate(g, tri::parse_switches("q"));
-    FAIL() << "no p accepted";
-  } catch (const tri::switch_error& e) {
-    EXPECT_NE(std::string(e.what()).find("switch -p is required"), std::string::npos);
-  }
+  // Without p the twelve vertices are a vertex set: the segments and the hole are not read.
+  const auto points = tri::triangulate(g, tri::parse_switches("q"));
+  double sum = 0.0;
+  for (std::size_t i = 0; i < points.mesh.triangles.size(); ++i)
+    sum += area(points.mesh, i);
+  EXPECT_NEAR(sum, 3.0, 1e-12); // the hull [0,3]x[0,1], the hole meshed
   // O drops the hole point: as in Triangle, the inner loop is then an internal boundary and
   // the hole is meshed too (one subdomain: the domain is no longer one of closed loops).
   const auto with_hole = tri::triangulate(g, tri::parse_switches("pqa0.1"));
@@ -221,6 +221,12 @@ TEST(FileNames, TriangleRules) {
   s = {};
   EXPECT_EQ(tri::make_file_names("key.node", s).base, "key");
   EXPECT_FALSE(s.poly);
+  EXPECT_EQ(tri::make_file_names("key.node", s).in_node, "key.node");
+  EXPECT_EQ(tri::make_file_names("key", s).out_poly, ""); // no .poly without p or c
+  s = tri::parse_switches("cev");
+  f = tri::make_file_names("dir/pts.node", s);
+  EXPECT_EQ(f.in_node + f.out_poly + f.edge, "dir/pts.nodedir/pts.1.polydir/pts.1.edge");
+  EXPECT_EQ(f.v_node + f.v_edge, "dir/pts.1.v.nodedir/pts.1.v.edge");
   EXPECT_THROW(tri::make_file_names("key.1.ele", s), tri::switch_error);
   EXPECT_THROW(tri::make_file_names("key.1.area", s), tri::switch_error);
 }

@@ -15,6 +15,7 @@
 #include <istream>
 #include <ostream>
 #include <string>
+#include <utility>
 
 namespace pdd {
 
@@ -59,6 +60,22 @@ inline pslg parse_poly(std::istream& in, const std::string& filename_for_message
 inline pslg read_poly(const std::filesystem::path& path) {
   const std::string text = detail::slurp_file(path);
   return detail::parse_poly_text(text, path.string(), path.parent_path());
+}
+
+/// Reads a Triangle .node file as a PSLG of vertices only (markers and attributes as read_poly
+/// reads a vertex section; the rest of the file is ignored, as Triangle does): the input of
+/// Triangle without -p, a vertex set.
+/// \throws pdd::input_error "file:line: expected ..." for malformed content (a vertex count of
+///   0 among them), pdd::error if the file cannot be opened.
+/// Complexity: linear in the file size. Thread-safety: reentrant.
+inline pslg read_node(const std::filesystem::path& path) {
+  detail::vertex_section vs = detail::parse_node_text(detail::slurp_file(path), path.string());
+  pslg g;
+  g.vertices = std::move(vs.vertices);
+  g.vertex_markers = std::move(vs.markers);
+  g.vertex_attribute_count = vs.attribute_count;
+  g.vertex_attributes = std::move(vs.attributes);
+  return g;
 }
 
 /// Writes a PSLG as a Triangle .poly file, atomically. Coordinates, vertex attributes,

@@ -1,6 +1,7 @@
 /// \file triangle_files.hpp
 /// Triangle's mesh output formats for a pdd::triangle_mesh: .node (vertices), .ele
-/// (triangles) and a .poly holding the mesh's boundary segments over the .node's vertices.
+/// (triangles) and a .poly holding the mesh's boundary segments over the .node's vertices;
+/// .neigh, .edge (switch e) and a Voronoi diagram's .v.node and .v.edge (switch v).
 /// Formats: https://www.cs.cmu.edu/~quake/triangle.node.html, triangle.ele.html.
 #pragma once
 
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <ostream>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace pdd {
@@ -129,6 +131,64 @@ inline void write_neigh(const std::filesystem::path& path,
       out.integer(t + format.first_index);
       for (const long long n : neighbors[t])
         out.put(' ').integer(n < 0 ? -1LL : n + f);
+      out.put('\n');
+    }
+    out.flush();
+  });
+}
+
+/// Writes a Triangle .edge file, atomically: header `<#edges> <1|0>`, then
+/// `<id> <endpoint> <endpoint> [marker]` (the marker column unless format.markers is false).
+/// \throws pdd::error when writing fails.
+inline void write_edge(const std::filesystem::path& path, std::span<const mesh_edge> edges,
+                       const triangle_format& format = {}) {
+  write_file_atomically(path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    out.integer(edges.size()).put(format.markers ? " 1\n" : " 0\n");
+    const std::size_t f = format.first_index;
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      out.integer(e + f).put(' ').integer(std::size_t{edges[e].a} + f).put(' ');
+      out.integer(std::size_t{edges[e].b} + f);
+      if (format.markers) out.put(' ').integer(edges[e].marker);
+      out.put('\n');
+    }
+    out.flush();
+  });
+}
+
+/// Writes a Voronoi diagram as Triangle's .v.node and .v.edge files, each atomically:
+/// `<#vertices> 2 0 0` and `<id> <x> <y>`; `<#edges> 0` and `<id> <v> <w>` for a finite edge,
+/// `<id> <v> -1 <dx> <dy>` for a ray (edge[1] < 0; direction from `directions`, one per edge).
+/// \throws pdd::error for a direction count that is not the edge count, or a failed write.
+inline void write_voronoi(const std::filesystem::path& node_path,
+                          const std::filesystem::path& edge_path, std::span<const point> vertices,
+                          std::span<const std::array<long long, 2>> edges,
+                          std::span<const point> directions, const triangle_format& format = {}) {
+  if (directions.size() != edges.size())
+    throw error("cannot write '" + edge_path.string() + "': " + std::to_string(edges.size()) +
+                " Voronoi edges with " + std::to_string(directions.size()) + " directions");
+  const auto f = static_cast<long long>(format.first_index);
+  write_file_atomically(node_path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    out.integer(vertices.size()).put(" 2 0 0\n");
+    for (std::size_t v = 0; v < vertices.size(); ++v)
+      out.integer(v + format.first_index)
+          .put(' ')
+          .num(vertices[v].x)
+          .put(' ')
+          .num(vertices[v].y)
+          .put('\n');
+    out.flush();
+  });
+  write_file_atomically(edge_path, [&](std::ostream& os) {
+    detail::text_sink out(os);
+    out.integer(edges.size()).put(" 0\n");
+    for (std::size_t e = 0; e < edges.size(); ++e) {
+      out.integer(e + format.first_index).put(' ').integer(edges[e][0] + f).put(' ');
+      if (edges[e][1] >= 0)
+        out.integer(edges[e][1] + f);
+      else
+        out.put("-1 ").num(directions[e].x).put(' ').num(directions[e].y);
       out.put('\n');
     }
     out.flush();

@@ -1,7 +1,8 @@
 /// \file file_names.hpp
 /// pdd::triangle::file_names: the files a `triangle` command line reads and writes, by
 /// Triangle 1.6's rules (its README and `triangle -h`): `key.poly` -> `key.1.node`,
-/// `key.1.ele`, `key.1.poly`; `key.1.poly` -> `key.2.*`; -I drops the iteration number.
+/// `key.1.ele`, `key.1.poly`; `key.1.poly` -> `key.2.*`; -I drops the iteration number; without
+/// p the input is `key.node` (a vertex set).
 #pragma once
 
 #include <pdd/triangle/switches.hpp>
@@ -14,9 +15,11 @@ namespace pdd::triangle {
 
 /// Input and output names of one run (empty: not read / not written).
 struct file_names {
-  std::string base; ///< the input name without its extension (`dir/key`, `dir/key.1`)
-  std::string poly; ///< the .poly read (-p)
+  std::string base;    ///< the input name without its extension (`dir/key`, `dir/key.1`)
+  std::string poly;    ///< the .poly read (-p)
+  std::string in_node; ///< the .node read (without -p)
   std::string node, ele, out_poly, neigh; ///< the outputs
+  std::string edge, v_node, v_edge;       ///< -e, -v
 };
 
 namespace detail {
@@ -33,7 +36,8 @@ inline bool strip_suffix(std::string& name, std::string_view ext) {
 /// when the base has no numeric last component, `<stem>.<n+1>` when it ends in `.<n>`
 /// (`key.1.poly` writes `key.2.*`, as Triangle numbers iterations), `<base>` with -I. Outputs that
 /// -N, -E, -P suppress are left empty; with -I, the .poly is never written and neither is the .node
-/// when `node_was_read` (Triangle will not overwrite its input); .neigh only with -n. \throws
+/// when `node_was_read` (Triangle will not overwrite its input); the .poly only with -p or -c;
+/// .neigh only with -n, .edge with -e, .v.node and .v.edge with -v. \throws
 /// switch_error for an `.area` or `.ele` name (refining a mesh is not supported).
 inline file_names make_file_names(std::string name, switches& sw, bool node_was_read = false) {
   if (detail::strip_suffix(name, ".area"))
@@ -48,7 +52,10 @@ inline file_names make_file_names(std::string name, switches& sw, bool node_was_
                        "-r) is not supported");
   file_names f;
   f.base = name;
-  if (sw.poly) f.poly = name + ".poly";
+  if (sw.poly)
+    f.poly = name + ".poly";
+  else
+    f.in_node = name + ".node";
   std::string stem = name + ".1";
   const std::size_t dot = name.find_last_of('.');
   if (dot != std::string::npos && dot > 0 && dot + 1 < name.size() &&
@@ -58,8 +65,14 @@ inline file_names make_file_names(std::string name, switches& sw, bool node_was_
   if (sw.no_iteration_numbers) stem = name;
   if (!sw.no_node && !(sw.no_iteration_numbers && node_was_read)) f.node = stem + ".node";
   if (!sw.no_ele) f.ele = stem + ".ele";
-  if (sw.poly && !sw.no_poly && !sw.no_iteration_numbers) f.out_poly = stem + ".poly";
+  if ((sw.poly || sw.convex) && !sw.no_poly && !sw.no_iteration_numbers)
+    f.out_poly = stem + ".poly";
   if (sw.neighbors) f.neigh = stem + ".neigh";
+  if (sw.edges) f.edge = stem + ".edge";
+  if (sw.voronoi) {
+    f.v_node = stem + ".v.node";
+    f.v_edge = stem + ".v.edge";
+  }
   return f;
 }
 

@@ -20,7 +20,10 @@ public:
 
 /// The switches of one Triangle run that pdd supports (Triangle's letters in brackets).
 struct switches {
-  bool poly = false;    ///< [p] mesh the PSLG of a .poly (set by a .poly file name too)
+  bool poly = false; ///< [p] mesh the PSLG of a .poly (set by a .poly file name too)
+  /// [c] segments on the convex hull: with p, the hull of the PSLG's vertices is meshed; without
+  /// p, the hull's edges are output as segments (a .poly file)
+  bool convex = false;
   bool quality = false; ///< [q] or [a]: Delaunay refinement (Triangle: a implies quality)
   /// [q<angle>] the minimum angle in degrees: 20 after a bare q, 0 without q (as Triangle).
   double min_angle_deg = 0.0;
@@ -38,6 +41,8 @@ struct switches {
   bool zero_based = false;           ///< [z] numbering from 0
   bool jettison = false;             ///< [j] drop vertices no triangle uses
   bool neighbors = false;            ///< [n] neighbours of every triangle (.neigh)
+  bool edges = false;                ///< [e] every edge of the mesh (.edge)
+  bool voronoi = false;              ///< [v] the Voronoi diagram (.v.node, .v.edge)
 };
 
 } // namespace pdd::triangle
@@ -48,17 +53,18 @@ struct switches {
 namespace pdd::triangle {
 
 /// The switch letters parse_switches accepts, for messages and documentation.
-inline constexpr std::string_view supported_switches = "p q a A Q V N E P B I O z j n";
+inline constexpr std::string_view supported_switches = "p q a A c e v Q V N E P B I O z j n";
 
 /// Parses a switch string as Triangle does: one letter per switch, in any order and any
 /// number of times; `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,
-/// never `a2.6e-7`: Triangle reads no exponent, and neither does pdd); a bare `a` asks for
+/// never `a2.6e-7`: Triangle reads no exponent, and neither does pdd: an `e` right after such a
+/// number, followed by a digit or a sign, is refused as an exponent); a bare `a` asks for
 /// the regional area bounds, and `a` with and without a number may both appear. A single
 /// leading '-' is allowed. pdd-triangle parses each `-...` argument with it, passing the
 /// switches so far as `s` (Triangle reads every argument that starts with '-').
 /// \throws switch_error naming the switch for every letter that is not supported (see
 ///   detail::refusal for the reasons given), an area that is not > 0 or a number that does
-///   not parse (`q1.2.3`).
+///   not parse (`q1.2.3`) or an exponent after a number (`a2.6e-7`).
 /// Complexity O(length). Thread-safety: reentrant.
 inline switches parse_switches(std::string_view text, switches s = {}) {
   if (text.starts_with('-')) text.remove_prefix(1);
@@ -67,6 +73,7 @@ inline switches parse_switches(std::string_view text, switches s = {}) {
     const char c = text[i++];
     if (c == 'q' || c == 'a') {
       const std::string_view number = detail::number_after(text, i);
+      detail::refuse_exponent(text, i, c, number);
       if (c == 'q') {
         s.quality = true;
         s.min_angle_deg = number.empty() ? 20.0 : detail::switch_number(number, "q");

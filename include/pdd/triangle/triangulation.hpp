@@ -18,6 +18,18 @@ struct triangulate_options {
   std::size_t subdomains = 0; ///< N of every component (0: automatic, 1: monolithic)
 };
 
+/// Switch v: the Voronoi diagram dual to the mesh, as Triangle writes it (.v.node, .v.edge).
+struct voronoi_diagram {
+  /// Vertex t: the circumcentre of triangle t of the mesh (CGAL's construction, rounded).
+  std::vector<point> vertices;
+  /// Edge i, the dual of edge i of triangulation::edges: two Voronoi vertices, or one and -1
+  /// for a ray (the dual of a boundary edge).
+  std::vector<std::array<long long, 2>> edges;
+  /// Edge i's ray direction (a boundary edge a->b, the mesh on its left, rotated clockwise:
+  /// (b.y - a.y, a.x - b.x), outward, as long as the edge); (0, 0) for a finite edge.
+  std::vector<point> directions;
+};
+
 /// The mesh and the tables Triangle's outputs hold.
 struct triangulation {
   /// The mesh: input vertices first, in input order (as Triangle numbers them), then the
@@ -31,6 +43,15 @@ struct triangulation {
   /// regional area bounds differ).
   std::vector<generate_statistics> runs;
   std::size_t jettisoned_vertices = 0; ///< switch j
+  /// Switch e (or v): every edge of the mesh once, triangle by triangle (the edge across from
+  /// vertex i of triangle t, i = 0, 1, 2, listed by the smaller of its two triangles), oriented
+  /// as in that triangle; markers by Triangle's rule: a segment's nonzero marker, else 1 on the
+  /// boundary, else 0.
+  std::vector<mesh_edge> edges;
+  voronoi_diagram voronoi; ///< switch v
+  /// Without p: {vertex, the earlier equal vertex} for every input vertex equal to an earlier
+  /// one; Triangle ignores it (it is in the output, used by no triangle) with a warning.
+  std::vector<std::array<index_t, 2>> duplicate_vertices;
 };
 
 } // namespace pdd::triangle

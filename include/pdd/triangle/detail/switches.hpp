@@ -29,11 +29,8 @@ struct refused_switches {
 };
 
 inline constexpr refused_switches refusal_reasons[] = {
-    {"r", " (refine a previous mesh) is not supported: pdd meshes PSLGs whose vertices all lie "
-          "on segment loops, and a mesh's interior vertices do not; mesh the original .poly with "
-          "the finer switches instead"},
-    {"c", " (mesh the convex hull) is not supported: pdd meshes the domain enclosed by the "
-          "segments"},
+    {"r", " (refine a previous mesh) is not supported: pdd does not read a previous mesh's "
+          ".ele or .area; mesh the original .poly (or .node) with the finer switches instead"},
     {"D", " (conforming Delaunay) is not supported: pdd's meshes are constrained Delaunay"},
     {"u", " (a user-defined triunsuitable test) is not supported"},
     {"wW", " (weighted Delaunay) is not supported"},
@@ -41,7 +38,7 @@ inline constexpr refused_switches refusal_reasons[] = {
     {"Y", " (no Steiner points on the boundary) is not supported: pdd splits boundary segments "
           "when refinement needs it"},
     {"S", " (a Steiner point budget) is not supported"},
-    {"evg", " (edge, Voronoi or OFF output) is not supported"},
+    {"g", " (OFF output for Geomview) is not supported"},
     {"iFlsLCX", " (a choice of Triangle's internal algorithms or checks) is not supported"},
     {"hH?", " (help) is not a meshing switch; run pdd-triangle --help"},
 };
@@ -51,7 +48,8 @@ inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
   for (const refused_switches& r : refusal_reasons)
     if (r.letters.find(c) != std::string_view::npos) return sw + std::string(r.reason);
-  return sw + " is not a Triangle switch pdd supports (supported: p q a A Q V N E P B I O z j n)";
+  return sw +
+         " is not a Triangle switch pdd supports (supported: p q a A c e v Q V N E P B I O z j n)";
 }
 
 /// A number after q or a, read with std::from_chars (digits and '.' only, the characters
@@ -65,6 +63,18 @@ inline double switch_number(std::string_view number, const char* letter) {
   return v;
 }
 
+/// Refuses an exponent after the number of q or a (`a2.6e-7`): Triangle would read `a2.6`,
+/// then the switches e, - and 7, which is never what was meant. `i` is just past the number.
+inline void refuse_exponent(std::string_view text, std::size_t i, char letter,
+                            std::string_view number) {
+  if (number.empty() || i + 1 >= text.size() || (text[i] != 'e' && text[i] != 'E')) return;
+  const char next = text[i + 1];
+  if ((next >= '0' && next <= '9') || next == '-' || next == '+')
+    throw switch_error(std::string("switch -") + letter + std::string(number) + text[i] + next +
+                       "...: Triangle reads only digits and '.' after -" + letter +
+                       " (no exponent); write the number out, e.g. -a0.00000026");
+}
+
 /// A switch letter without a number and the flag of switches it sets.
 struct flag_switch {
   char letter;
@@ -73,6 +83,9 @@ struct flag_switch {
 
 inline constexpr flag_switch flag_switches[] = {
     {'p', &switches::poly},
+    {'c', &switches::convex},
+    {'e', &switches::edges},
+    {'v', &switches::voronoi},
     {'A', &switches::regional_attributes},
     {'Q', &switches::quiet},
     {'N', &switches::no_node},
@@ -115,6 +128,7 @@ inline std::string format_switches(const switches& s) {
     if (on) out += c;
   };
   flag(s.poly, 'p');
+  flag(s.convex, 'c');
   if (s.quality && s.min_angle_deg > 0.0) out += 'q' + plain_number(s.min_angle_deg);
   if (s.max_area > 0.0) out += 'a' + plain_number(s.max_area);
   flag(s.regional_areas, 'a');
@@ -130,6 +144,8 @@ inline std::string format_switches(const switches& s) {
   flag(s.zero_based, 'z');
   flag(s.jettison, 'j');
   flag(s.neighbors, 'n');
+  flag(s.edges, 'e');
+  flag(s.voronoi, 'v');
   return out;
 }
 
