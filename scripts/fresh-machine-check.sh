@@ -51,11 +51,21 @@ t0=$(date +%s)
 echo "fresh-machine-check: debootstrap bookworm (minbase) from $mirror into $root"
 debootstrap --variant=minbase bookworm "$root" "$mirror" >"$logs/debootstrap.log" 2>&1 ||
   { tail -20 "$logs/debootstrap.log"; exit 1; }
-# apt's sources as a Debian 12 machine has them: this machine's (bookworm, its updates, security)
+# apt's sources as a Debian 12 machine has them: this machine's (bookworm, its updates, security),
+# but not the deb-src lines scripts/install-deps.sh --tsan-tbb added here (a fresh machine has
+# none: .ci/run must add them itself)
 rm -f "$root/etc/apt/sources.list"
-cp /etc/apt/sources.list.d/*.sources "$root/etc/apt/sources.list.d/" 2>/dev/null ||
-  cp /etc/apt/sources.list "$root/etc/apt/sources.list"
+copied=0
+for f in /etc/apt/sources.list.d/*.sources; do
+  [ -f "$f" ] && [ "$(basename "$f")" != pdd-deb-src.sources ] || continue
+  cp "$f" "$root/etc/apt/sources.list.d/"
+  copied=1
+done
+[ "$copied" = 1 ] || cp /etc/apt/sources.list "$root/etc/apt/sources.list"
 cp -L /etc/resolv.conf "$root/etc/resolv.conf" 2>/dev/null || true
+# a machine knows its own name: debootstrap leaves /etc/hosts out, and then every mpiexec waits
+# about 5 s for the host name to resolve (the MPI tests ran 15-30 times slower)
+cp -L /etc/hosts "$root/etc/hosts" 2>/dev/null || true
 mount -t proc proc "$root/proc"
 mount -t sysfs sysfs "$root/sys"
 mount --bind /dev "$root/dev"

@@ -4,6 +4,7 @@ properties a user checks (empty circumcircles tested exactly on integer points, 
 area, every vertex kept, Voronoi vertices equidistant from their sites, rays outward)."""
 import math
 import warnings
+from fractions import Fraction
 
 import numpy as np
 import pytest
@@ -155,7 +156,10 @@ def test_voronoi_is_dual_to_the_delaunay_triangulation():
                 continue
             a, b = pts[t[origin][(k + 1) % 3]], pts[t[origin][(k + 2) % 3]]
             edge = b - a
-            ok |= bool(direction @ edge == 0 and edge[0] * direction[1] - edge[1] * direction[0] < 0)
+            # exactly, in rationals: numpy's dot may use a BLAS with fused multiply-adds, which
+            # leaves the rounding error of one product where ey * ex - ex * ey is 0
+            dx, dy, ex, ey = (Fraction(float(c)) for c in (*direction, *edge))
+            ok |= dx * ex + dy * ey == 0 and ex * dy - ey * dx < 0
         assert ok
 
 

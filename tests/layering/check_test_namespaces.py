@@ -4,8 +4,9 @@
 The test executables are unity builds (tests/CMakeLists.txt, PDD_TEST_UNITY_BATCH): files of
 one module share a translation unit, so two helpers of the same name in two files would clash
 in some batches and not in others. Every tests/<module>/<stem>.cpp (not common/, fuzz/, mpi/,
-install/) must therefore open `namespace <stem> {` after its last #include, with nothing but
-blank lines and comments between, and end with `} // namespace <stem>`. A file that does not is
+tsan/, install/: helpers and programs with their own main, outside the unity builds) must
+therefore open `namespace <stem> {` after its last #include, with nothing but blank lines and
+comments between, and end with `} // namespace <stem>`. A file that does not is
 reported with file:line and the exit status is 1. `--self-test` checks, on a temporary tree,
 that each kind of mistake is reported (the check can fail).
 """
@@ -13,7 +14,7 @@ import pathlib
 import sys
 import tempfile
 
-SKIP = {"common", "fuzz", "mpi", "install", "layering"}
+SKIP = {"common", "fuzz", "mpi", "tsan", "install", "layering"}
 
 
 def problems_of(path):
