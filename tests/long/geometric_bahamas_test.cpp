@@ -5,7 +5,7 @@
 // field used (exact Delaunay, conformity, area bound, unshielded quality), bitwise identical at
 // 1 and 2 threads, and within the 3 % of the monolithic kernel's triangle count
 // (measured +2.5 %; +2.4 % at 1.92e-5, benchmarks/results/real-geometries.md). At 4.8e-5
-// (about 2M triangles) the run decouples within the split-point limit (measured +7.1 %).
+// (about 2M triangles): tests/ci_sized/geometric_bahamas_ci_test.cpp.
 // Skips when ../shared is absent.
 #include <pdd/io/poly.hpp>
 
@@ -49,32 +49,7 @@ TEST(LongGeometric, BahamasAutomaticVerifiedAndThreadIndependent) {
   EXPECT_LT(ratio, 1.03) << "decoupled vs monolithic triangles";
 }
 
-// About 2M triangles: the loop's decomposition leaves 97K split points, within 5 % of the
-// estimate (planning.max_split_point_fraction), and the run decouples instead of falling back
-// to one subdomain (before the driver's slope 1/32 it took the second try with a cap of 2048
-// and gave +11.7 %; the second try is tested on the notched square, geometric_pipeline_test).
-TEST(LongGeometric, BahamasAt2MDecouples) {
-  const std::filesystem::path path = bahamas_path();
-  if (path.empty()) GTEST_SKIP() << "no shared data: 0 runs checked";
-  const pdd::pslg g = pdd::read_poly(path.string());
-  pdd::generate_options o;
-  o.criteria.max_area = 4.8e-5;
-  o.threads = 2;
-  pdd::generate_statistics st;
-  const pdd::triangle_mesh two = mesh_verified(g, o, st);
-  EXPECT_EQ(st.path, "geometric") << st.plan_reason;
-  EXPECT_LE(static_cast<double>(st.split_points),
-            o.planning.max_split_point_fraction * st.estimated_triangles);
-  o.threads = 1;
-  pdd::generate_statistics st1;
-  EXPECT_TRUE(pdd::test::bitwise_equal(two, mesh_verified(g, o, st1))) << "1 vs 2 threads";
-  o.subdomains = 1;
-  pdd::generate_statistics whole;
-  const double ratio = static_cast<double>(two.triangles.size()) /
-                       static_cast<double>(mesh_verified(g, o, whole).triangles.size());
-  std::printf("bahamas 2M: %zu subdomains, %zu split points, %zu triangles, %.2f %% over\n",
-              st.subdomains, st.split_points, two.triangles.size(), 100.0 * (ratio - 1.0));
-  EXPECT_LT(ratio, 1.10) << "decoupled vs monolithic triangles";
-}
+// About 2M triangles (the loop's decomposition within the split-point limit, decoupled instead
+// of meshed whole): tests/ci_sized/geometric_bahamas_ci_test.cpp, run by CI.
 
 } // namespace geometric_bahamas_test
