@@ -21,7 +21,7 @@ template <class M>
 class LongKernelSquares : public ::testing::Test {};
 TYPED_TEST_SUITE(LongKernelSquares, pdd::test::kernel_types, pdd::test::kernel_names);
 
-TYPED_TEST(LongKernelSquares, UpToAMillionTrianglesVerified) {
+TYPED_TEST(LongKernelSquares, UpToAHundredThousandTrianglesVerified) {
   const pdd::pslg square = pdd::test::unit_square();
   for (const double expected : {1e3, 1e4, 1e5}) { // 1e6: tests/ci_sized/kernel_million_test
     pdd::mesh_criteria c;
