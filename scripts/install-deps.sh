@@ -35,12 +35,13 @@ fi
 # deb-src lines mirroring the deb lines of this machine's apt sources (deb822 and one-line).
 add_source_lines() {
   local f
+  # only Debian's own registries: a third-party one (nodesource, say) may publish no sources
   for f in /etc/apt/sources.list.d/*.sources; do
     [ -f "$f" ] && [ "$f" != /etc/apt/sources.list.d/pdd-deb-src.sources ] &&
-      { sed 's/^Types:.*$/Types: deb-src/' "$f"; echo; }
+      grep -q '^URIs:.*debian' "$f" && { sed 's/^Types:.*$/Types: deb-src/' "$f"; echo; }
   done | $sudo tee /etc/apt/sources.list.d/pdd-deb-src.sources >/dev/null
   if [ -f /etc/apt/sources.list ]; then
-    sed -n 's/^deb \(.*\)$/deb-src \1/p' /etc/apt/sources.list |
+    sed -n 's/^deb \(.*debian.*\)$/deb-src \1/p' /etc/apt/sources.list |
       $sudo tee /etc/apt/sources.list.d/pdd-deb-src.list >/dev/null
   fi
   $sudo apt-get update -qq
