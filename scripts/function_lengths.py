@@ -2,6 +2,14 @@
 """Lists the functions longer than LIM lines (default 40; CONTRIBUTING: functions under ~40).
 
 Usage: LIM=40 scripts/function_lengths.py $(git ls-files 'include/*.hpp' 'examples/*.cpp')
+       scripts/function_lengths.py --max 44 include examples   # the check CI runs
+       scripts/function_lengths.py --self-test
+
+With --max N, the arguments may be folders (their .hpp/.cpp files, recursively), the
+functions longer than N lines are listed with file:line, and the exit status is 1 if there is
+one (ctest function_lengths, label fast: no function over 44 lines, ~40 with some slack for
+the heuristic). --self-test checks on a temporary file that a function of 45 lines fails it and
+one of 44 does not (the check can fail).
 
 A function's length is counted from the first line of its signature (template line
 included, comments not) to its closing brace. The parse is a heuristic (comments, strings and
@@ -85,12 +93,44 @@ def scan(s, start, end, out, scope):
             i=close+1; continue
         i+=1
 
-res=[]
-for f in sys.argv[1:]:
-    src=pathlib.Path(f).read_text(); s=strip(src); out=[]; scan(s,0,len(s),out,[])
-    for n,name,l in out: res.append((n,f,l,name))
-res.sort(reverse=True)
-lim=int(__import__('os').environ.get('LIM','40'))
-print(f"functions: {len(res)}, over {lim}: {sum(1 for r in res if r[0]>lim)}")
-for n,f,l,name in res:
-    if n>lim: print(f"{n:4d}  {f}:{l}  {name}")
+def lengths(files):
+    res=[]
+    for f in files:
+        src=pathlib.Path(f).read_text(); s=strip(src); out=[]; scan(s,0,len(s),out,[])
+        for n,name,l in out: res.append((n,str(f),l,name))
+    res.sort(reverse=True)
+    return res
+
+def sources(paths):
+    for p in map(pathlib.Path,paths):
+        if p.is_dir(): yield from sorted(f for f in p.rglob('*') if f.suffix in ('.hpp','.cpp'))
+        else: yield p
+
+def report(res,lim):
+    print(f"functions: {len(res)}, over {lim}: {sum(1 for r in res if r[0]>lim)}")
+    for n,f,l,name in res:
+        if n>lim: print(f"{n:4d}  {f}:{l}  {name}")
+
+def self_test():
+    import tempfile
+    def fn(name,lines): return f"int {name}(int x) {{\n"+"  x += 1;\n"*(lines-3)+"  return x;\n}\n"
+    with tempfile.TemporaryDirectory() as tmp:
+        f=pathlib.Path(tmp)/'a.hpp'
+        f.write_text("namespace pdd {\nstruct s {\n"+fn('short_one',44)+"};\n"+fn('long_one',45)+"}\n")
+        got=[(n,name) for n,_,_,name in lengths(sources([tmp])) if n>44]
+    ok=got==[(45,'long_one')]
+    print("self-test", "passed" if ok else f"failed: over 44 lines {got}, expected [(45, 'long_one')]")
+    return 0 if ok else 1
+
+def main(argv):
+    if argv==['--self-test']: return self_test()
+    if argv[:1]=='--max'.split():
+        lim=int(argv[1]); files=list(sources(argv[2:]))
+        if not files: print("no .hpp/.cpp files in", *argv[2:]); return 1
+        res=lengths(files); report(res,lim)
+        return 1 if any(r[0]>lim for r in res) else 0
+    report(lengths(argv),int(__import__('os').environ.get('LIM','40')))
+    return 0
+
+if __name__=='__main__':
+    sys.exit(main(sys.argv[1:]))

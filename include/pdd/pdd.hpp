@@ -1,20 +1,12 @@
 /// \file pdd.hpp
-/// Umbrella header: every public pdd header (not detail/). Include single headers to compile
-/// faster.
+/// Umbrella header: every public pdd header (not detail/), grouped by the level of its module.
+/// Include single headers to compile faster. Not included here: pdd/mpi/ (MPI programs only;
+/// target pdd::mpi), pdd/triangle/ (Triangle's interface, over generate) and
+/// pdd/sizing/expression.hpp (target pdd::expression).
 ///
-/// Layering (include/pdd/README.md; tests/layering checks it): a module includes only modules
-/// on lower levels and only its own detail/.
-///   0: core, errors
-///   1: concepts, geometry
-///   2: sizing, partition, kernels, parallel
-///   3: madd
-///   4: shielding
-///   5: decoupling
-///   6: io, meshing
-///   7: mesh
-///   8: pipeline
-///   9: generate, mpi (pdd/mpi/: MPI programs only, not included here; target pdd::mpi)
-///   10: pdd
+/// Layering: a module includes only modules on lower levels and only its own detail/. The
+/// levels are in one table, in include/pdd/README.md; tests/layering/check_layering.py reads
+/// it and checks every #include.
 #pragma once
 
 // level 0: core, errors

@@ -8,6 +8,11 @@ to pipeline/ and may use pipeline/detail/). The table, a ```layering block in
   - headers of its own module, and of modules on a strictly lower level;
   - a detail/ folder only from inside the folder that owns it (kernels/cgal/detail/ is private
     to kernels/cgal/).
+Every include of pdd's own headers is written `#include <pdd/...>` (and the libraries' are
+<...> too): a quoted include ("../mesh/merge.hpp", "detail/x.hpp", "pdd/core/point.hpp"), an
+angle include with ".." or one without the pdd/ prefix that names a header under <root>/pdd
+(<detail/x.hpp>) is reported; one that resolves to a header is then checked against the
+levels too.
 Anything else (an upward or sideways include, another module's detail/) is reported with
 file:line, and the exit status is 1. `--self-test` builds a small bad tree in a temporary
 folder and checks that each kind of violation is reported (the check can fail).
@@ -17,7 +22,7 @@ import re
 import sys
 import tempfile
 
-INCLUDE = re.compile(r'^\s*#\s*include\s*[<"](pdd/[^>"]+)[>"]')
+INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
 
 
 def read_levels(root):
@@ -50,6 +55,23 @@ def detail_owner(rel):
     return rel[: i + 1] if i >= 0 else None
 
 
+def resolve(root, path, bracket, name):
+    """The pdd/... path of the header an include names (None: not one of pdd's headers) and
+    whether it is spelled as pdd requires (<pdd/...>, no "..")."""
+    if bracket == "<" and name.startswith("pdd/") and ".." not in name.split("/"):
+        return name, True
+    bases = ([path.parent] if bracket == '"' else []) + [root, root / "pdd"]
+    for base in bases:
+        candidate = (base / name).resolve()
+        if candidate.is_file() and (root / "pdd").resolve() in candidate.parents:
+            return candidate.relative_to(root.resolve()).as_posix(), False
+    # not found: a quoted include is pdd's own (its headers and the libraries' are all <...>),
+    # and so is a relative path
+    if bracket == '"' or ".." in name.split("/"):
+        return (name if name.startswith("pdd/") else None), False
+    return None, True
+
+
 def check(root):
     levels = read_levels(root)
     problems = []
@@ -67,7 +89,14 @@ def check(root):
             m = INCLUDE.match(line)
             if not m:
                 continue
-            target = m.group(1)
+            bracket, name = m.groups()
+            target, well_spelled = resolve(root, path, bracket, name)
+            if not well_spelled:
+                spelled = f'"{name}"' if bracket == '"' else f"<{name}>"
+                problems.append(f"{rel}:{number}: includes {spelled}: pdd's headers are included "
+                                f"as <pdd/...>" + (f" (<{target}>)" if target else ""))
+            if target is None:
+                continue
             where = f"{rel}:{number}: includes {target}"
             try:
                 theirs = module_of(target, levels)
@@ -95,6 +124,11 @@ def self_test():
             "pdd/madd/detail/d.hpp": "#include <pdd/core/a.hpp>\n",
             "pdd/io/x.hpp": "#include <pdd/madd/detail/d.hpp>\n",
             "pdd/mesh/m.hpp": "#include \"pdd/madd/side.hpp\"\n#include <pdd/madd/detail/d.hpp>\n",
+            # relative includes: only <pdd/...> names pdd's headers
+            "pdd/core/rel.hpp": "#include \"../mesh/m.hpp\"\n#include \"b.hpp\"\n",
+            "pdd/madd/own.hpp": "#include \"detail/d.hpp\"\n#include <core/b.hpp>\n",
+            "pdd/io/y.hpp": "#include \"../gone.hpp\"\n#include \"third_party.h\"\n#include <vector>\n"
+                            "#include <mpi.h>\n",
         }
         for name, text in files.items():
             (root / name).parent.mkdir(parents=True, exist_ok=True)
@@ -106,6 +140,18 @@ def self_test():
             "pdd/io/x.hpp:1: includes pdd/madd/detail/d.hpp: madd (level 1) is not below io",
             "pdd/madd/side.hpp:1: includes pdd/io/x.hpp: io (level 1) is not below madd",
             "pdd/mesh/m.hpp:2: includes pdd/madd/detail/d.hpp: pdd/madd/detail/ is private",
+            "pdd/mesh/m.hpp:1: includes \"pdd/madd/side.hpp\": pdd's headers are included as",
+            "pdd/core/rel.hpp:1: includes \"../mesh/m.hpp\": pdd's headers are included as "
+            "<pdd/...> (<pdd/mesh/m.hpp>)",
+            "pdd/core/rel.hpp:1: includes pdd/mesh/m.hpp: mesh (level 2) is not below core",
+            "pdd/core/rel.hpp:2: includes \"b.hpp\": pdd's headers are included as <pdd/...> "
+            "(<pdd/core/b.hpp>)",
+            "pdd/madd/own.hpp:1: includes \"detail/d.hpp\": pdd's headers are included as "
+            "<pdd/...> (<pdd/madd/detail/d.hpp>)",
+            "pdd/madd/own.hpp:2: includes <core/b.hpp>: pdd's headers are included as <pdd/...> "
+            "(<pdd/core/b.hpp>)",
+            "pdd/io/y.hpp:1: includes \"../gone.hpp\": pdd's headers are included as <pdd/...>",
+            "pdd/io/y.hpp:2: includes \"third_party.h\": pdd's headers are included as",
         ]
         missing = [e for e in expected if not any(p.startswith(e) for p in problems)]
         if missing or len(problems) != len(expected):

@@ -3,8 +3,6 @@
 /// pdd::validate_decomposition checks against and what it found.
 #pragma once
 
-#include <pdd/errors.hpp>
-
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -33,10 +31,6 @@ struct decomposition_report {
     for (const auto& p : problems)
       s += p + "\n";
     return s;
-  }
-  /// \throws decomposition_error with the summary unless ok().
-  void throw_if_invalid() const {
-    if (!ok()) throw decomposition_error("invalid decomposition:\n" + summary());
   }
 };
 

@@ -1,7 +1,6 @@
 /// \file gradation_control.hpp
 /// pdd::gradation_controlled_decompose: the gradation-controlled domain decomposition
-/// (dissertation 7.3, Algorithm 7.1, with Condition 3 of 7.6) on MADD's split policy hook,
-/// and pdd::measure_gradation, the conditions measured on a decomposition.
+/// (dissertation 7.3, Algorithm 7.1, with Condition 3 of 7.6) on MADD's split policy hook.
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
@@ -83,20 +82,7 @@ inline std::vector<std::vector<point>> subdomain_points(const decomposition& d, 
   }
   return loops;
 }
-} // namespace detail
 
-/// Measures Conditions 1-3 of o on d (neighbours: the pairs of d.interfaces).
-/// Complexity: one pdd::sizing_range and one constrained triangulation per subdomain.
-inline gradation_report measure_gradation(const decomposition& d, const any_sizing& field,
-                                          const gradation_options& o) {
-  const detail::leaf_measuring measure{field, o.max_area, o.mean_area_fraction};
-  std::vector<detail::leaf_measure> m;
-  for (std::size_t s = 0; s < d.subdomains.size(); ++s)
-    m.push_back(measure(detail::subdomain_points(d, s)));
-  return detail::gradation_report_of(d, m, o);
-}
-
-namespace detail {
 /// A number for a message, in the shortest general format ("1e-09", "0.0001").
 inline std::string general_number(double v) {
   std::ostringstream out;
