@@ -38,21 +38,8 @@ generate_result generate_merged(const pslg& domain, const generate_options& opti
   const auto t0 = std::chrono::steady_clock::now();
   pipeline<M, P, E> pl(domain, options, mesher, partitioner);
   pl.template check_memory<merge_sink>(); // up front, before any work
-  pl.decouple();                          // MADD and the decoupling path (none when N == 1)
   generate_result r;
-  if (pl.subdomains() <= 1) {
-    // The kernel's own output is the result: no copy through a sink.
-    pl.template check_memory<merge_sink>();
-    const auto tm = std::chrono::steady_clock::now();
-    r.mesh = pl.mesh_whole(pl.statistics().shielded_triangles);
-    generate_statistics& st = pl.statistics();
-    st.timings.mesh = seconds_since(tm);
-    st.triangles = r.mesh.triangles.size();
-  } else {
-    merge_sink sink(options.threads);
-    pl.mesh(sink);
-    r.mesh = sink.take();
-  }
+  r.mesh = pl.mesh_merged();
   r.statistics = std::move(pl.statistics());
   r.statistics.vertices = r.mesh.vertices.size();
   r.statistics.timings.total = seconds_since(t0);

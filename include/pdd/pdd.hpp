@@ -63,8 +63,8 @@
 // pdd/sizing/expression.hpp (muParser) is not included here: it needs the pdd::expression target
 
 // level 3: madd
+#include <pdd/core/decomposition.hpp>
 #include <pdd/madd/decompose.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/face_decoupling.hpp>

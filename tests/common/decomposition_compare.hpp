@@ -2,7 +2,7 @@
 // loops (vertex ids), e.g. one made on 1 thread and one on 2.
 #pragma once
 
-#include <pdd/madd/decomposition.hpp>
+#include <pdd/core/decomposition.hpp>
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,6 @@
 // against the sizing field the plan used, with its statistics.
 #pragma once
 
-#include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/pipeline.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
@@ -22,19 +21,11 @@ namespace pdd::test {
 inline triangle_mesh mesh_verified(const pslg& g, const generate_options& o,
                                    generate_statistics& st) {
   pipeline<> p(g, o);
-  p.decouple();
-  triangle_mesh m;
-  if (p.subdomains() <= 1) {
-    m = p.mesh_whole();
-  } else {
-    merge_sink sink(o.threads);
-    p.mesh(sink);
-    m = sink.take();
-  }
+  triangle_mesh m = p.mesh_merged();
   st = p.statistics();
   verify_options vo{.criteria = o.criteria};
   vo.quality_exempt = find_shielded_triangles(m, g);
-  const verification_report rep = verify(m, g, vo, p.options().sizing);
+  const verification_report rep = verify(m, g, vo, p.meshing().sizing);
   EXPECT_TRUE(rep.ok()) << (rep.messages.empty() ? "" : rep.messages.front());
   EXPECT_EQ(rep.delaunay_violations, 0u);
   EXPECT_EQ(rep.area_violations, 0u);

@@ -2,8 +2,8 @@
 // cut by straight separators into an nx x ny grid, and an annulus cut into four quarters.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -155,10 +155,8 @@ void mesh_distributed(const mesh_options& o, mpi_run<M>& r) {
     if (r.path->subdomains() <= 1) {
       pdd::mpi::collectively(r.comm, [&] { mesh_whole_on_rank_0(r, measured); });
     } else {
-      const pdd::meshing_options mo{r.options.criteria, r.options.decoupling.max_repairs,
-                                    r.options.sizing};
-      r.meshing =
-          pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), mo, M{}, r.threads, measured);
+      r.meshing = pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), r.path->meshing(), M{},
+                                            r.threads, measured);
     }
   } catch (const std::exception&) {
     files->remove_written(); // no index was written: leave no pieces of a failed run either

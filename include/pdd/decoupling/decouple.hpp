@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
@@ -11,7 +12,6 @@
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 

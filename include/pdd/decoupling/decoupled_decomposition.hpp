@@ -3,10 +3,10 @@
 /// decoupling path (dissertation 6.2), ready to be meshed subdomain by subdomain.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 

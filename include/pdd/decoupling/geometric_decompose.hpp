@@ -8,10 +8,10 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/bbox.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/geometric_sizing.hpp>
 #include <pdd/geometry/feature_gap.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>

@@ -7,11 +7,11 @@
 
 #include <pdd/concepts/executor.hpp>
 #include <pdd/core/bbox.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/domain_faces.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/sizing/any_sizing.hpp>

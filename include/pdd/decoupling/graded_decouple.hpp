@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
@@ -11,7 +12,6 @@
 #include <pdd/decoupling/detail/build.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>
 #include <cmath>

@@ -21,10 +21,10 @@
 /// `subdomain <area> <loops>`) is read as well.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/detail/decomposition_io.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <charconv>
 #include <cmath>

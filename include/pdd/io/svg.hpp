@@ -3,6 +3,7 @@
 /// and a MADD decomposition, for inspection in a browser.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
@@ -13,7 +14,6 @@
 #include <pdd/io/detail/svg_drawing.hpp>
 #include <pdd/io/detail/text.hpp>
 #include <pdd/io/svg_options.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>
 #include <cstdint>

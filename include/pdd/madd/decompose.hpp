@@ -5,10 +5,10 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/validate.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
 #include <pdd/madd/detail/assemble.hpp>
 #include <pdd/madd/detail/region.hpp>

@@ -3,9 +3,9 @@
 /// separator angles, lengths and subdomain areas).
 #pragma once
 
-#include <pdd/madd/detail/region.hpp>
-#include <pdd/madd/decomposition.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
+#include <pdd/madd/detail/region.hpp>
 
 #include <algorithm>
 #include <cmath>

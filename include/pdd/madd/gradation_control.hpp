@@ -4,10 +4,10 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/decompose.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/detail/gradation_control.hpp>
 #include <pdd/madd/gradation_options.hpp>

@@ -6,9 +6,9 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/detail/graded.hpp>
 #include <pdd/madd/split_policy.hpp>
 #include <pdd/sizing/sizing_range.hpp>

@@ -3,10 +3,10 @@
 /// pslg, and loop areas.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <cmath>
 #include <cstddef>

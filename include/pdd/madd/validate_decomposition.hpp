@@ -4,9 +4,9 @@
 /// dissertation ch. 3; used by the tests and by the pdd-decompose driver).
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_report.hpp>
 #include <pdd/madd/detail/validate.hpp>
 

@@ -5,8 +5,8 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/shielding/detail/plan.hpp>
 #include <pdd/shielding/subdomain_shields.hpp>

@@ -7,9 +7,9 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/lfs.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/shielding/detail/plan.hpp>

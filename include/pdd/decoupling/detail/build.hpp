@@ -3,10 +3,10 @@
 /// segments (the path edges).
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <cmath>
 #include <cstdint>

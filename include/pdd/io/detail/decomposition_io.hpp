@@ -4,8 +4,8 @@
 /// of the format's sections.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <charconv>
 #include <cmath>

@@ -3,13 +3,13 @@
 /// on an svg_canvas.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/io/detail/mesh_picture.hpp>
 #include <pdd/io/detail/svg.hpp>
 #include <pdd/io/svg_options.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>
 #include <cstdint>

@@ -4,10 +4,10 @@
 /// deterministic vertex ids, subdomain order and interfaces.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/detail/region.hpp>
 
 #include <algorithm>

@@ -10,9 +10,9 @@
 /// produces the same points.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/core/triangle_measures.hpp>
-#include <pdd/madd/decomposition.hpp>
 
 #include <algorithm>
 #include <cmath>

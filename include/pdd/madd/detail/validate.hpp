@@ -4,10 +4,10 @@
 /// segments' coverage and of the interface curves.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/domain_faces.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/decomposition_report.hpp>
 #include <pdd/madd/detail/region.hpp>
 

@@ -4,12 +4,11 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/decoupling/graded_decouple.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/pipeline/detail/sizing_plan.hpp>
-#include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/statistics.hpp>
 #include <pdd/shielding/graded_shields.hpp>
 #include <pdd/shielding/shield_decomposition.hpp>
@@ -69,18 +68,18 @@ graded_path_build build_graded_path(decomposition& d, const mesh_criteria& crite
 }
 
 /// The pipeline's graded path on d: m(D_i) from subdomain_area_bounds (Algorithm 7.1's bounds,
-/// else o.sizing's minima; at most o.criteria.max_area), then build_graded_path; the shields
-/// go to `shields` and k_i (with the largest ratio across an interface and the subdomains a
-/// short separator lowered) to `st`.
+/// else the minima of `sizing`, the path's field; at most criteria.max_area), then
+/// build_graded_path; the shields go to `shields` and k_i (with the largest ratio across an
+/// interface and the subdomains a short separator lowered) to `st`.
 /// \throws as build_graded_path.
 template <Executor E>
-decoupled_decomposition graded_pipeline_path(decomposition& d, const generate_options& o,
-                                             const gradation_report& gradation, const E& executor,
-                                             generate_statistics& st,
-                                             std::vector<subdomain_shields>& shields) {
+decoupled_decomposition
+graded_pipeline_path(decomposition& d, const mesh_criteria& criteria, const any_sizing& sizing,
+                     const gradation_report& gradation, const E& executor, generate_statistics& st,
+                     std::vector<subdomain_shields>& shields) {
   const std::vector<double> lo =
-      subdomain_area_bounds(gradation, d, o.sizing, o.criteria.max_area, executor);
-  graded_path_build b = build_graded_path(d, o.criteria, lo, executor);
+      subdomain_area_bounds(gradation, d, sizing, criteria.max_area, executor);
+  graded_path_build b = build_graded_path(d, criteria, lo, executor);
   shields = std::move(b.shields);
   st.subdomain_k = std::move(b.graded.subdomain_k);
   st.k_ratio_max = b.graded.k_ratio_max;

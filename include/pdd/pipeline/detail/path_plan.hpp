@@ -6,10 +6,10 @@
 
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
 #include <pdd/geometry/lfs.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/pipeline/options.hpp>
@@ -32,14 +32,6 @@ inline std::string number_text(double v) {
   return out.str();
 }
 
-/// The name of the path a decoupled pipeline took (generate_statistics::path).
-inline std::string path_name(const generate_statistics& st, bool geometric) {
-  return st.subdomains <= 1 ? "monolithic"
-         : geometric        ? "geometric"
-         : st.graded_path   ? "graded"
-                            : "uniform";
-}
-
 /// The plan's reason for one subdomain on a domain that is not one of closed loops.
 inline constexpr const char* general_domain_reason =
     "one subdomain: the domain is not one of closed loops (internal or dangling segments, "
@@ -54,46 +46,36 @@ inline std::string split_point_reason(std::size_t split_points, double estimated
          "one subdomain";
 }
 
-/// More than p.max_split_point_fraction of the estimate in split points on N > 1 subdomains.
-inline bool too_many_split_points(const generate_statistics& st, const planning_options& p) {
-  return st.subdomains > 1 &&
-         static_cast<double>(st.split_points) > p.max_split_point_fraction * st.estimated_triangles;
-}
-
-/// The plan's reason for the geometric loop's second run, with a cap of `cap` subdomains.
-inline std::string geometric_retry_reason(const generate_statistics& st, const planning_options& p,
-                                          std::size_t cap) {
-  return std::to_string(st.split_points) + " split points with the loop's cap of " +
-         std::to_string(st.geometric_cap) + " subdomains, more than " +
+/// The plan's reason for the geometric loop's second run: `split_points` with a cap of `cap`
+/// subdomains, again with a cap of `next`.
+inline std::string geometric_retry_reason(std::size_t split_points, std::size_t cap,
+                                          const planning_options& p, std::size_t next) {
+  return std::to_string(split_points) + " split points with the loop's cap of " +
+         std::to_string(cap) + " subdomains, more than " +
          number_text(100.0 * p.max_split_point_fraction) +
-         " % of the estimate: MADD and the loop again with a cap of " + std::to_string(cap);
+         " % of the estimate: MADD and the loop again with a cap of " + std::to_string(next);
 }
 
-/// Whether the geometric path is planned (generate_options::geometric_sizing); writes the
-/// reason (and "monolithic" for N = 1) into the statistics. `area_min` is the smallest area
+/// Whether the geometric path is planned (generate_options::geometric_sizing) for N =
+/// `subdomains` and `estimated` triangles; writes the reason. `area_min` is the smallest area
 /// bound over the domain (min of criteria.max_area and the field's lower bound).
 inline bool choose_geometric_path(const pslg& domain, const generate_options& o, double area_min,
-                                  generate_statistics& st) {
+                                  std::size_t subdomains, double estimated, std::string& reason) {
   const auto no = [&](const std::string& why) {
-    st.plan_reason = why;
+    reason = why;
     return false;
   };
-  if (st.subdomains <= 1) {
-    st.path = "monolithic";
+  if (subdomains <= 1)
     return no(o.subdomains == 1 ? "one subdomain requested"
               : std::isfinite(area_min)
-                  ? "estimated " + number_text(st.estimated_triangles) +
+                  ? "estimated " + number_text(estimated) +
                         " triangles: too few to decompose (pdd::automatic_subdomains)"
                   : "no area bound: the kernel meshes the domain graded by its geometry");
-  }
   if (o.geometric_sizing == geometric_sizing_mode::off) return no("geometric sizing off");
   if (o.decoupling.k_override > 0.0 || o.decoupling.k_scale != 1.0)
     return no("decoupling.k_override or k_scale set: the uniform path");
   if (!std::isfinite(area_min)) return no("no area bound: Algorithm 8.3 scales a bounded field");
-  if (o.geometric_sizing == geometric_sizing_mode::on) {
-    st.plan_reason = "geometric sizing on";
-    return true;
-  }
+  if (o.geometric_sizing == geometric_sizing_mode::on) return !no("geometric sizing on");
   // automatic: the uniform --max-area with automatic N (a field or a requested N keep their
   // graded or uniform path unless geometric sizing is on)
   if (o.sizing)
@@ -103,28 +85,28 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
   const std::string numbers =
       "lfs_min " + number_text(lfs) + ", (1/2) sqrt(m / sqrt2) " + number_text(term);
   if (!(lfs < term)) return no("no feature smaller than the mesh (" + numbers + ")");
-  st.plan_reason = "a feature smaller than the mesh (" + numbers + "): Algorithm 8.3";
-  return true;
+  return !no("a feature smaller than the mesh (" + numbers + "): Algorithm 8.3");
 }
 
-/// The geometric loop's cap on subdomains for a plan of n: the option's, at least 4n.
-inline std::size_t geometric_cap(const generate_options& o, std::size_t n) {
-  return std::max<std::size_t>(o.geometric_loop.max_subdomains, 4 * n);
+/// The geometric loop's cap on subdomains for a plan of n: the plan's `cap`, at least 4n.
+inline std::size_t geometric_cap(std::size_t cap, std::size_t n) {
+  return std::max<std::size_t>(cap, 4 * n);
 }
 
 /// The geometric path's decomposition: pdd::geometric_decompose from `initial` with
 /// Algorithm 7.1's options as the pipeline sets them (R1, R2 of o.gradation; at least n
-/// subdomains; Condition 3 T = target_subdomain_triangles for automatic N).
+/// subdomains; Condition 3 T = target_subdomain_triangles for automatic N), the loop capped
+/// at geometric_cap(cap, n).
 template <GraphPartitioner P, Executor E>
 geometric_decomposition run_geometric(const pslg& domain, decomposition initial,
-                                      const generate_options& o, std::size_t n,
+                                      const generate_options& o, std::size_t n, std::size_t cap,
                                       const madd_options& mo, const P& partitioner,
                                       const E& executor, const madd_start* regions) {
   gradation_options go = o.gradation;
   go.min_subdomains = n;
   if (o.subdomains == 0) go.max_subdomain_triangles = o.planning.target_subdomain_triangles;
   geometric_decompose_options gdo = o.geometric_loop;
-  gdo.max_subdomains = geometric_cap(o, n);
+  gdo.max_subdomains = geometric_cap(cap, n);
   return geometric_decompose(domain, std::move(initial), o.sizing, o.criteria.max_area, go, mo, gdo,
                              partitioner, executor, regions);
 }

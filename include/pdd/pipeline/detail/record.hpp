@@ -3,9 +3,9 @@
 /// shortest interface edge of a decomposition.
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/meshing/meshing_statistics.hpp>
 #include <pdd/pipeline/options.hpp>

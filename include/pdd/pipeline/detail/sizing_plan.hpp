@@ -6,10 +6,10 @@
 
 #include <pdd/concepts/executor.hpp>
 #include <pdd/core/bbox.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/domain_faces.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/pipeline/planning.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>

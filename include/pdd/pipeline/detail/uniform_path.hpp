@@ -4,11 +4,11 @@
 #pragma once
 
 #include <pdd/concepts/executor.hpp>
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/pipeline/detail/record.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/shielding/shield_decomposition.hpp>

@@ -4,9 +4,9 @@
 /// (Algorithm 8.2, steps 5-12).
 #pragma once
 
+#include <pdd/core/decomposition.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/madd/decomposition.hpp>
 #include <pdd/shielding/detail/plan.hpp>
 #include <pdd/shielding/shield_triangle.hpp>
 
