@@ -6,6 +6,7 @@ For README.md, CONTRIBUTING.md and every docs/**/*.md under ROOT (default: this 
   * every `#anchor` into a .md page (or into the page itself) matches one of its headings,
     slugged as GitHub does;
   * every `benchmarks/results/...` path quoted in backticks exists (the figures' sources);
+  * every link is on one line (a link split across lines would go unchecked);
   * README.md has at most 250 lines;
   * every page under docs/ is in mkdocs.yml's nav, and every nav entry exists.
 Each problem is printed as file:line: message; the exit code is 1 when there is one.
@@ -89,7 +90,12 @@ def check_links(root: Path, path: Path, cache: dict[Path, set[str]]) -> list[str
             quoted = span.group(2).strip()
             if RESULTS_PATH.match(quoted) and not (root / quoted).exists():
                 problems.append(f"{rel}:{number}: figure source `{quoted}` does not exist")
-        for match in LINK.finditer(CODE_SPAN.sub("", line)):
+        prose = CODE_SPAN.sub("", line)
+        links = list(LINK.finditer(prose))
+        if prose.count("](") > len(links):
+            problems.append(f"{rel}:{number}: a link this checker cannot read (keep a link's "
+                            f"text and target on one line)")
+        for match in links:
             target = match.group(1)
             if SCHEME.match(target) or target.startswith("//"):
                 continue
@@ -178,6 +184,7 @@ def self_test() -> int:
         "missing figure source": ("docs/guide.md", "`benchmarks/results/gone.md`\n",
                                   "figure source `benchmarks/results/gone.md`"),
         "long README": ("README.md", "x\n" * README_MAX_LINES, "lines, more than"),
+        "split link": ("docs/guide.md", "[a link\nsplit](guide.md)\n", "cannot read"),
     }
     failures = 0
     with tempfile.TemporaryDirectory() as tmp:
