@@ -11,7 +11,7 @@
 
 namespace pdd::drivers {
 
-/// Exit codes of the pdd-* programs (README, "Exit codes").
+/// Exit codes of the pdd-* programs (docs/reference/pdd-mesh.md, "Exit codes").
 enum exit_code : int {
   ok = 0,
   bad_input = 1,

@@ -61,7 +61,7 @@ inline void add_sizing_options(CLI::App& app, sizing_sources& sizing) {
                  "background mesh FILE.node (+ FILE.ele): area per vertex as the .node's one "
                  "attribute, or per triangle in FILE.area")
       ->check(CLI::ExistingFile);
-  app.add_option("--area-grid", sizing.area_grid, "structured area grid file (see README)")
+  app.add_option("--area-grid", sizing.area_grid, "structured area grid file (docs/formats.md)")
       ->check(CLI::ExistingFile);
 }
 
