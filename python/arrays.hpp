@@ -2,9 +2,9 @@
 // are zero-copy views of a mesh kept alive by a capsule.
 #pragma once
 
-#include <pdd/errors.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
 
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
@@ -73,6 +73,29 @@ inline std::vector<int> markers_of(const py::handle& obj, std::size_t n, const s
   return out;
 }
 
+/// The triangle package's vertex_attributes, (n,) or (n, k) floats with n = g's vertex count
+/// and every value finite, into g.vertex_attributes.
+inline void read_vertex_attributes(pslg& g, const py::handle& obj) {
+  using table = py::array_t<double, py::array::c_style | py::array::forcecast>;
+  table a;
+  try {
+    a = table::ensure(obj);
+  } catch (const py::error_already_set&) {
+    a = {};
+  }
+  if (!a || a.ndim() < 1 || a.ndim() > 2)
+    throw bad_argument("vertex_attributes must be a numeric array of shape (n,) or (n, k)");
+  if (static_cast<std::size_t>(a.shape(0)) != g.vertices.size())
+    throw bad_argument("vertex_attributes has " + std::to_string(a.shape(0)) + " rows for " +
+                       std::to_string(g.vertices.size()) + " vertices");
+  g.vertex_attribute_count = a.ndim() == 1 ? 1 : static_cast<std::size_t>(a.shape(1));
+  g.vertex_attributes.assign(a.data(), a.data() + a.size());
+  for (std::size_t i = 0; i < g.vertex_attributes.size(); ++i)
+    if (!std::isfinite(g.vertex_attributes[i]))
+      throw bad_argument("vertex_attributes row " + std::to_string(i / g.vertex_attribute_count) +
+                         " is not finite");
+}
+
 /// Adds (m, 2) segments (vertex indices in [0, n)) with optional markers to g.
 inline void add_segments(pslg& g, const py::handle& segs, const py::handle& markers) {
   if (py::len(segs) == 0) return;
@@ -96,6 +119,10 @@ struct mesh_owner {
   triangle_mesh mesh;
   std::vector<double> attributes;
   std::vector<std::array<long long, 3>> neighbors;
+  /// Triangle's -o2: the corners, then the nodes in the middle of the edges opposite them.
+  std::vector<std::array<index_t, 6>> six_node_triangles;
+  std::vector<double> vertex_attributes; ///< vertex_attribute_count per vertex
+  std::size_t vertex_attribute_count = 0;
 };
 
 /// Zero-copy numpy views of a mesh_owner's vectors; each holds the capsule.
@@ -114,6 +141,19 @@ public:
   py::array triangles() {
     return view<std::int32_t>(owner_->mesh.triangles.data(), {rows(owner_->mesh.triangles), 3},
                               {3 * sizeof(index_t), sizeof(index_t)});
+  }
+  /// The vertex attributes, (n, k) float64.
+  py::array vertex_attributes() {
+    const auto k = static_cast<py::ssize_t>(owner_->vertex_attribute_count);
+    return view<double>(owner_->vertex_attributes.data(),
+                        {k == 0 ? 0 : rows(owner_->vertex_attributes) / k, k},
+                        {k * static_cast<py::ssize_t>(sizeof(double)), sizeof(double)});
+  }
+  /// The six-node triangles (-o2) as int32, (t, 6).
+  py::array six_node_triangles() {
+    return view<std::int32_t>(owner_->six_node_triangles.data(),
+                              {rows(owner_->six_node_triangles), 6},
+                              {6 * sizeof(index_t), sizeof(index_t)});
   }
   py::array segments() {
     return view<std::int32_t>(owner_->mesh.segments.data(), {rows(owner_->mesh.segments), 2},

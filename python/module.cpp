@@ -34,14 +34,11 @@ namespace {
 
 /// The triangle package's input dict as a pslg; unknown and unsupported keys are refused.
 pslg pslg_from_dict(const py::dict& tri) {
-  static const std::set<std::string> known{"vertices",        "vertex_markers", "segments",
-                                           "segment_markers", "holes",          "regions"};
+  static const std::set<std::string> known{"vertices", "vertex_markers",  "vertex_attributes",
+                                           "segments", "segment_markers", "holes",
+                                           "regions"};
   for (const auto& item : tri) {
     const auto key = py::str(item.first).cast<std::string>();
-    if (key == "vertex_attributes" && py::len(item.second) == 0) continue;
-    if (key == "vertex_attributes")
-      throw bad_argument("'vertex_attributes' are not supported: pdd does not interpolate "
-                         "vertex attributes");
     if (key == "triangles" || key == "triangle_max_area" || key == "triangle_attributes")
       throw bad_argument("'" + key +
                          "': refining a previous mesh (Triangle's -r) is not "
@@ -54,6 +51,8 @@ pslg pslg_from_dict(const py::dict& tri) {
   g.vertex_markers = tri.contains("vertex_markers")
                          ? markers_of(tri["vertex_markers"], g.vertices.size(), "vertex_markers")
                          : std::vector<int>(g.vertices.size(), 0);
+  if (tri.contains("vertex_attributes") && py::len(tri["vertex_attributes"]) > 0)
+    read_vertex_attributes(g, tri["vertex_attributes"]);
   if (tri.contains("segments"))
     add_segments(g, tri["segments"],
                  tri.contains("segment_markers") ? py::handle(tri["segment_markers"])
@@ -85,14 +84,22 @@ py::dict triangulate_result(const py::dict& tri, const triangle::switches& sw,
   owner->mesh = std::move(t.mesh);
   owner->attributes = std::move(t.triangle_attributes);
   owner->neighbors = std::move(t.neighbors);
+  owner->vertex_attributes = std::move(t.vertex_attributes);
+  owner->vertex_attribute_count = t.vertex_attribute_count;
+  for (std::size_t i = 0; i < t.second_order.size(); ++i) {
+    const auto& c = owner->mesh.triangles[i];
+    const auto& m = t.second_order[i];
+    owner->six_node_triangles.push_back({c[0], c[1], c[2], m[0], m[1], m[2]});
+  }
   mesh_views v(std::move(owner));
   py::dict out;
   const bool markers = !sw.no_boundary_markers;
   if (!sw.no_node) {
     out["vertices"] = v.vertices();
     if (markers) out["vertex_markers"] = v.ints(v.data().mesh.vertex_markers, true);
+    if (v.data().vertex_attribute_count > 0) out["vertex_attributes"] = v.vertex_attributes();
   }
-  if (!sw.no_ele) out["triangles"] = v.triangles();
+  if (!sw.no_ele) out["triangles"] = sw.second_order ? v.six_node_triangles() : v.triangles();
   if ((sw.poly || sw.convex) && !sw.no_poly) {
     out["segments"] = v.segments();
     if (markers) out["segment_markers"] = v.segment_markers(true);
@@ -312,11 +319,17 @@ opts: Triangle switches: p (mesh the PSLG; without p the vertices are a vertex s
 Delaunay triangulation, or with q/a a quality mesh of their convex hull; segments, holes and
 regions are then not read, with a warning), q[angle], a[area], a (regional areas), A, c (convex
 hull: with p the hull is meshed, without p its edges are the segments), e (edges), v (Voronoi
-diagram), Q, V (prints a summary), N, E, P, B, O, z, j, n; I is accepted and means nothing
-without files. Numbering is zero-based (the triangle package's 'z'). Any other switch, unknown
-key, 'vertex_attributes' or 'triangles' raises ValueError. A vertex equal to an earlier one
+diagram), o2 (six-node triangles: 'triangles' (t, 6), the corners, then the nodes in the middle
+of the edges opposite them, added to 'vertices'), Q, V (prints a summary), N, E, P, B, O, z, j,
+n; I is accepted and means nothing without files; i, F, l, s, L, X are accepted and ignored
+(Triangle's internal algorithms). p alone is the constrained Delaunay triangulation (no
+Steiner point). Numbering is zero-based (the triangle package's 'z'). 'vertex_attributes' (n,)
+or (n, k) are carried to every output vertex: interpolated linearly over the input's constrained
+Delaunay triangulation at new vertices, the edge's mean at o2's nodes. Any other switch, unknown
+key or 'triangles' raises ValueError. A vertex equal to an earlier one
 (without p) is ignored with a UserWarning, as Triangle ignores it.
-Returns a dict: vertices, vertex_markers (n, 1), triangles (t, 3) int32, segments and
+Returns a dict: vertices, vertex_markers (n, 1), vertex_attributes (n, k) (when given),
+triangles (t, 3) int32, segments and
 segment_markers (with p or c), holes and regions (copied, with p), triangle_attributes (with A),
 neighbors (with n, -1 on the boundary), edges (e, 2) and edge_markers (e, 1) int32 (with e),
 voronoi (with v: a dict of vertices, edges, ray_origins, ray_directions as pdd.voronoi returns

@@ -87,7 +87,7 @@ void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t
 
 /// How long meshing took, in how many subdomains, and how the pipeline read the domain.
 void report_meshing(const pdd::triangle::triangulation& t, double ms) {
-  if (t.runs.empty()) { // a vertex set without q or a: its Delaunay triangulation
+  if (t.runs.empty()) { // no q or a: the (constrained) Delaunay triangulation
     std::printf("Delaunay milliseconds:  %.0f\n\n", ms);
     return;
   }
@@ -128,13 +128,8 @@ pdd::pslg read_input(const pdd::triangle::file_names& f, const pdd::triangle::sw
   return sw.poly ? pdd::read_poly(f.poly) : pdd::read_node(f.in_node);
 }
 
-/// Triangle's warning for every input vertex equal to an earlier one (without -p), and a
-/// warning that vertex attributes are not carried to the output.
+/// Triangle's warning for every input vertex equal to an earlier one (without -p).
 void input_warnings(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
-  if (in.vertex_attribute_count > 0)
-    std::printf("Warning:  the input's %zu vertex attribute(s) per vertex are not written: pdd "
-                "does not interpolate vertex attributes.\n",
-                in.vertex_attribute_count);
   for (const auto& d : t.duplicate_vertices)
     std::printf("Warning:  A duplicate vertex at %s appeared and was ignored (vertex %zu is "
                 "vertex %zu).\n",
@@ -148,10 +143,12 @@ void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::swit
   fmt.first_index = sw.zero_based ? 0 : 1;
   fmt.markers = !sw.no_boundary_markers;
   fmt.marker_attribute = false;
-  output(f.node, "a .node file", sw.quiet,
-         [&](const std::string& p) { pdd::write_node(p, t.mesh, fmt); });
-  output(f.ele, "an .ele file", sw.quiet,
-         [&](const std::string& p) { pdd::write_ele(p, t.mesh, fmt, t.triangle_attributes); });
+  output(f.node, "a .node file", sw.quiet, [&](const std::string& p) {
+    pdd::write_node(p, t.mesh, fmt, t.vertex_attributes, t.vertex_attribute_count);
+  });
+  output(f.ele, "an .ele file", sw.quiet, [&](const std::string& p) {
+    pdd::write_ele(p, t.mesh, fmt, t.triangle_attributes, t.second_order);
+  });
   if (sw.poly || sw.convex) // Triangle writes segments only for a PSLG or with c
     output(f.out_poly, "a .poly file", sw.quiet,
            [&](const std::string& p) { pdd::write_mesh_poly(p, t.mesh, fmt, in.holes); });
@@ -166,6 +163,18 @@ void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::swit
                        t.voronoi.directions, fmt);
 }
 
+/// What pdd-triangle is about to do, as Triangle announces it; with V the switches it ignores.
+void announce(const pdd::triangle::switches& sw) {
+  std::printf(sw.quality ? "Meshing with pdd's decoupled pipeline.\n"
+              : sw.poly  ? "Constructing constrained Delaunay triangulation (CGAL).\n"
+                         : "Constructing Delaunay triangulation (CGAL).\n");
+  if (sw.verbose > 0 && !sw.ignored.empty())
+    std::printf("Ignoring switch(es) -%s: they choose Triangle's internal algorithms, which pdd "
+                "does not use.\n",
+                sw.ignored.c_str());
+  if (sw.second_order) std::printf("Adding vertices for second-order triangles.\n");
+}
+
 int run(const cli_options& o) {
   const auto t0 = std::chrono::steady_clock::now();
   pdd::triangle::switches sw = read_switches(o);
@@ -174,9 +183,7 @@ int run(const cli_options& o) {
   const bool node_read = !probe.poly || std::filesystem::exists(base + ".node");
   const pdd::triangle::file_names f = pdd::triangle::make_file_names(o.input, sw, node_read);
   const pdd::pslg in = read_input(f, sw);
-  if (!sw.quiet)
-    std::printf(sw.poly || sw.quality ? "Meshing with pdd's decoupled pipeline.\n"
-                                      : "Constructing Delaunay triangulation (CGAL).\n");
+  if (!sw.quiet) announce(sw);
   const auto tm = std::chrono::steady_clock::now();
   const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
   if (!sw.quiet) input_warnings(in, t);

@@ -89,6 +89,8 @@ def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
     ("a2.6e-7", "no exponent"),
     ("pa0", "greater than zero"),
     ("pqY", "switch -Y"),
+    ("pqo3", "switch -o3"),
+    ("pqC", "pdd-verify"),
 ])
 def test_refused_switches(opts, message):
     with pytest.raises(ValueError, match=message.replace("-", "\\-")):
@@ -102,8 +104,10 @@ def test_bad_input_raises_value_error_with_pdd_message():
         pdd.triangulate(bad, "pq")
     with pytest.raises(ValueError, match="unknown key 'vertexes'"):
         pdd.triangulate(dict(vertexes=np.zeros((3, 2))), "p")
-    with pytest.raises(ValueError, match="vertex_attributes"):
-        pdd.triangulate(dict(square(), vertex_attributes=np.ones((4, 1))), "p")
+    with pytest.raises(ValueError, match="vertex_attributes has 3 rows for 4 vertices"):
+        pdd.triangulate(dict(square(), vertex_attributes=np.ones((3, 1))), "p")
+    with pytest.raises(ValueError, match="vertex_attributes row 2 is not finite"):
+        pdd.triangulate(dict(square(), vertex_attributes=[1.0, 2.0, np.nan, 4.0]), "p")
     with pytest.raises(ValueError, match="outside"):
         pdd.mesh(square()["vertices"], np.array([[0, 1], [1, 7]]))
     with pytest.raises(ValueError, match="shape"):
@@ -193,6 +197,48 @@ def test_meshio_reads_the_arrays():
 
 
 @pytest.mark.skipif("PDD_TRIANGLE_EXE" not in os.environ, reason="pdd-triangle not built")
+def test_p_alone_adds_no_steiner_point():
+    key = read_poly("key.poly")
+    out = pdd.triangulate(key, "p")
+    v, t = out["vertices"], out["triangles"]
+    assert np.array_equal(v, key["vertices"])  # the input's vertices, nothing added
+    assert (areas(v, t) > 0).all()
+    refined = pdd.triangulate(key, "pq")
+    assert np.isclose(areas(v, t).sum(), areas(refined["vertices"], refined["triangles"]).sum())
+    assert len(refined["vertices"]) > len(v)
+
+
+def test_o2_six_node_triangles():
+    out = pdd.triangulate(read_poly("key.poly"), "pqa0.01o2e")
+    v, t = out["vertices"], out["triangles"]
+    assert t.shape[1] == 6 and t.dtype == np.int32
+    corners = t[:, :3].max() + 1
+    assert len(v) == corners + len(out["edges"])  # one node in the middle of every edge
+    for k in range(3):  # node 3 + k sits in the middle of the edge opposite corner k
+        a, b = v[t[:, (k + 1) % 3]], v[t[:, (k + 2) % 3]]
+        assert np.array_equal(v[t[:, 3 + k]], 0.5 * (a + b))
+
+
+@pytest.mark.parametrize("opts", ["pq30a0.01", "pq30a0.01o2j", "q30a0.01"])
+def test_vertex_attributes_are_interpolated_linearly(opts):
+    key = read_poly("key.poly")
+    x, y = key["vertices"][:, 0], key["vertices"][:, 1]
+    key["vertex_attributes"] = np.c_[1 + 2 * x - 3 * y, x * 0 + 7]  # linear: reproduced exactly
+    out = pdd.triangulate(key, opts)
+    v, att = out["vertices"], out["vertex_attributes"]
+    assert att.shape == (len(v), 2) and att.dtype == np.float64
+    assert len(v) > len(x)
+    assert np.allclose(att[:, 0], 1 + 2 * v[:, 0] - 3 * v[:, 1], rtol=0, atol=1e-9)
+    assert np.allclose(att[:, 1], 7, rtol=0, atol=1e-9)
+    assert np.array_equal(att[:len(x), 0], key["vertex_attributes"][:, 0])  # the input's own
+
+
+def test_triangles_internal_switches_are_ignored():
+    sq = square()
+    assert np.array_equal(pdd.triangulate(sq, "pqa0.1iFlsLX")["triangles"],
+                          pdd.triangulate(sq, "pqa0.1")["triangles"])
+
+
 def test_pdd_triangle_files_match_the_module(tmp_path):
     src = SOURCE / "examples" / "data" / "key.poly"
     (tmp_path / "key.poly").write_text(src.read_text())

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -86,6 +87,26 @@ TEST(PddTriangle, WritesTriangleFilesThatReadBack) {
   ASSERT_EQ(r2.code, 0) << r2.output;
   EXPECT_NE(r2.output.find("not one of closed loops"), std::string::npos) << r2.output;
   EXPECT_TRUE(fs::exists(dir / "key.2.ele"));
+}
+
+TEST(PddTriangle, SecondOrderPAloneAndIgnoredSwitches) {
+  const fs::path dir = folder_with_key("pt_o2");
+  auto r = run_in(dir, "-pqo2Vi key.poly");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("Adding vertices for second-order triangles."), std::string::npos);
+  EXPECT_NE(r.output.find("Ignoring switch(es) -i"), std::string::npos) << r.output;
+  const std::string ele = first_line(dir / "key.1.ele");
+  EXPECT_EQ(ele.substr(ele.find(' ')), " 6 0"); // six nodes, no attribute
+  std::istringstream row(second_line(dir / "key.1.ele"));
+  std::vector<long> ids{std::istream_iterator<long>(row), std::istream_iterator<long>()};
+  EXPECT_EQ(ids.size(), 7u);
+  // p alone: the constrained Delaunay triangulation, the .node is the input's vertices
+  const fs::path d2 = folder_with_key("pt_p");
+  r = run_in(d2, "-pQ key.poly");
+  ASSERT_EQ(r.code, 0) << r.output;
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const std::string node = first_line(d2 / "key.1.node");
+  EXPECT_EQ(node.substr(0, node.find(' ')), std::to_string(key.vertices.size()));
 }
 
 TEST(PddTriangle, SwitchesChangeTheFiles) {
@@ -197,12 +218,15 @@ TEST(PddTriangle, VertexSetEdgesVoronoiAndHull) {
   ASSERT_EQ(r.code, 0) << r.output;
   EXPECT_EQ(first_line(dir / "pts.1.edge"), "8 0");
   EXPECT_EQ(second_line(dir / "pts.1.edge").substr(0, 2), "0 ");
-  // vertex attributes are not carried to the output, and pdd says so
-  pdd::test::write_text(dir / "att.node", "4 2 1 0\n1 0 0 5\n2 1 0 6\n3 1 1 7\n4 0 1 8\n");
-  r = run_in(dir, "-e att");
+  // vertex attributes are carried to the output, interpolated linearly (here 5 + x + 2 y)
+  pdd::test::write_text(dir / "att.node", "4 2 1 0\n1 0 0 5\n2 1 0 6\n3 1 1 8\n4 0 1 7\n");
+  r = run_in(dir, "-qa0.05 att");
   ASSERT_EQ(r.code, 0) << r.output;
-  EXPECT_NE(r.output.find("1 vertex attribute(s) per vertex are not written"), std::string::npos)
-      << r.output;
+  const pdd::pslg att = pdd::read_node(dir / "att.1.node");
+  ASSERT_EQ(att.vertex_attribute_count, 1u);
+  ASSERT_GT(att.vertices.size(), 4u);
+  for (std::size_t v = 0; v < att.vertices.size(); ++v)
+    EXPECT_NEAR(att.vertex_attributes[v], 5 + att.vertices[v].x + 2 * att.vertices[v].y, 1e-12);
   // a quality mesh of the hull, every input vertex kept
   r = run_in(dir, "-qa0.01 pts");
   ASSERT_EQ(r.code, 0) << r.output;

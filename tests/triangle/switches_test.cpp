@@ -71,15 +71,34 @@ TEST(Switches, EveryFlag) {
 }
 
 TEST(Switches, RefusesUnsupportedSwitchesByName) {
-  for (const char c : std::string("rDuwWoYSgiFlsLCXhH?x7%")) {
+  for (const char c : std::string("rDuwWYSgCohH?x7%")) {
     const std::string msg = refusal(std::string("p") + c);
     EXPECT_NE(msg.find(std::string("switch -") + c), std::string::npos) << msg;
   }
   EXPECT_NE(refusal("rpq").find("refine a previous mesh"), std::string::npos);
   EXPECT_NE(refusal("pg").find("OFF"), std::string::npos);
   EXPECT_NE(refusal("pY").find("boundary"), std::string::npos);
-  EXPECT_NE(refusal("pk").find("supported: p q a A c e v Q V N E P B I O z j n"),
+  EXPECT_NE(refusal("pk").find("supported: p q a A c e v o2 Q V N E P B I O z j n, and i F l "
+                               "s L X, which pdd ignores"),
             std::string::npos);
+  EXPECT_NE(refusal("pC").find("pdd-verify"), std::string::npos);
+}
+
+TEST(Switches, SecondOrderIsO2Only) {
+  const auto s = parse_switches("pqo2e");
+  EXPECT_TRUE(s.second_order && s.edges && s.quality);
+  EXPECT_EQ(pdd::triangle::to_string(s), "pq20eo2");
+  EXPECT_NE(refusal("po3").find("switch -o3"), std::string::npos);
+  EXPECT_NE(refusal("po").find("only higher order is -o2"), std::string::npos);
+  EXPECT_NE(refusal("poq").find("switch -oq"), std::string::npos);
+}
+
+TEST(Switches, TrianglesInternalChoicesAreAcceptedAndIgnored) {
+  const auto s = parse_switches("pqiFlsLX");
+  EXPECT_EQ(s.ignored, "iFlsLX");
+  EXPECT_TRUE(s.quality);
+  EXPECT_EQ(pdd::triangle::to_string(s), "pq20iFlsLX");
+  EXPECT_EQ(parse_switches("pq").ignored, "");
 }
 
 TEST(Switches, RefusesBadNumbers) {

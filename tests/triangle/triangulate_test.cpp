@@ -2,6 +2,7 @@
 // A, O, j, n on pdd meshes, Triangle's output file names, and determinism across threads.
 #include <pdd/io/poly.hpp>
 #include <pdd/mesh/quality.hpp>
+#include <pdd/mesh/verify.hpp>
 #include <pdd/triangle/file_names.hpp>
 #include <pdd/triangle/triangulate.hpp>
 
@@ -12,6 +13,7 @@
 
 #include <array>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace triangulate_test {
@@ -166,6 +168,78 @@ TEST(Triangulate, WithoutPTheVerticesAreTriangulatedAndOMeshesHoles) {
   const pdd::pslg sq = square_loop({}, 0, 0, 1, 1);
   EXPECT_EQ(tri::triangulate(sq, tri::parse_switches("pOqa0.1")).mesh.triangles,
             tri::triangulate(sq, tri::parse_switches("pqa0.1")).mesh.triangles);
+}
+
+TEST(Triangulate, PAloneIsTheConstrainedDelaunayTriangulation) {
+  pdd::pslg g = two_squares(); // with a crack and a well in the first square
+  g.add_segment(g.add_vertex({0.2, 0.2}), g.add_vertex({0.8, 0.3}), 7);
+  g.add_vertex({0.5, 0.7});
+  const auto t = tri::triangulate(g, tri::parse_switches("p"));
+  EXPECT_TRUE(t.runs.empty()) << "no refinement run";
+  EXPECT_EQ(t.mesh.vertices, g.vertices) << "no Steiner point, input order";
+  double sum = 0.0;
+  for (std::size_t i = 0; i < t.mesh.triangles.size(); ++i) {
+    EXPECT_GT(area(t.mesh, i), 0.0) << "counter-clockwise";
+    sum += area(t.mesh, i);
+  }
+  EXPECT_NEAR(sum, 1.75, 1e-12);
+  EXPECT_EQ(t.mesh.segments.size(), g.segments.size()) << "every segment is a mesh edge";
+  EXPECT_EQ(t.mesh.segments.back().marker, 7);
+  pdd::verify_options vo; // constrained Delaunay, every segment and vertex in the mesh
+  vo.criteria.min_angle_deg = 0.0;
+  const pdd::verification_report rep = pdd::verify(t.mesh, g, vo);
+  EXPECT_TRUE(rep.ok()) << pdd::test::describe(rep);
+  EXPECT_EQ(rep.delaunay_violations, 0u);
+  // Euler on the two squares (one with a hole, one with a crack and a well): the number of
+  // triangles of a triangulation without Steiner points is fixed by the vertices
+  EXPECT_EQ(t.mesh.triangles.size(), 8u + 8u);
+  // q refines it; A gives the regions' attributes without refining
+  EXPECT_GT(tri::triangulate(g, tri::parse_switches("pq")).mesh.vertices.size(), g.vertices.size());
+  g.regions.push_back({{2.1, 0.1}, 5.0, -1.0});
+  const auto attributed = tri::triangulate(g, tri::parse_switches("pA"));
+  EXPECT_EQ(attributed.mesh.triangles, t.mesh.triangles);
+  for (std::size_t i = 0; i < attributed.triangle_attributes.size(); ++i)
+    EXPECT_EQ(attributed.triangle_attributes[i], centroid_x(t.mesh, i) > 2.0 ? 5.0 : 0.0);
+}
+
+TEST(Triangulate, PAloneMatchesTrianglesCountsOnItsExamples) {
+  const auto dir = pdd::test::shared_data_dir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/data absent";
+  // Triangle 1.6: triangle -pQ triangle_face.poly -> 26 vertices, 36 triangles;
+  // triangle -pQ triangle_A.poly -> 29 vertices, 29 triangles
+  for (const auto& [name, vertices, triangles] :
+       {std::tuple{"triangle_face.poly", 26u, 36u}, std::tuple{"triangle_A.poly", 29u, 29u}}) {
+    const auto t = tri::triangulate(pdd::read_poly(dir / name), tri::parse_switches("p"));
+    EXPECT_EQ(t.mesh.vertices.size(), vertices) << name;
+    EXPECT_EQ(t.mesh.triangles.size(), triangles) << name;
+  }
+}
+
+TEST(Triangulate, SecondOrderNodesSitInTheMiddleOfEveryEdgeOnce) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const auto plain = tri::triangulate(key, tri::parse_switches("pqa0.01e"));
+  const auto t = tri::triangulate(key, tri::parse_switches("pqa0.01eo2"));
+  const std::size_t corners = plain.mesh.vertices.size();
+  ASSERT_EQ(t.second_order.size(), t.mesh.triangles.size());
+  EXPECT_EQ(t.mesh.triangles, plain.mesh.triangles) << "o2 adds nodes, the corners stay";
+  EXPECT_EQ(t.mesh.vertices.size(), corners + plain.edges.size()) << "one node per edge";
+  std::vector<int> uses(t.mesh.vertices.size(), 0);
+  for (std::size_t i = 0; i < t.mesh.triangles.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const pdd::index_t n = t.second_order[i][k];
+      ASSERT_GE(n, corners);
+      ++uses[n];
+      const pdd::point a = t.mesh.vertices[t.mesh.triangles[i][(k + 1) % 3]];
+      const pdd::point b = t.mesh.vertices[t.mesh.triangles[i][(k + 2) % 3]];
+      EXPECT_EQ(t.mesh.vertices[n], (pdd::point{0.5 * (a.x + b.x), 0.5 * (a.y + b.y)}));
+    }
+  std::size_t boundary = 0;
+  for (std::size_t v = corners; v < uses.size(); ++v) {
+    EXPECT_TRUE(uses[v] == 1 || uses[v] == 2) << v;
+    boundary += uses[v] == 1;
+    EXPECT_EQ(t.mesh.vertex_markers[v] != 0, uses[v] == 1) << "marked on the boundary only";
+  }
+  EXPECT_EQ(boundary, t.mesh.segments.size()) << "key.poly: every boundary edge on a segment";
 }
 
 TEST(Triangulate, JettisonKeepsEveryUsedVertex) {

@@ -33,16 +33,26 @@ struct triangle_format {
 /// default) and coordinates in shortest round-trip form.
 /// \throws pdd::error naming the path for an inconsistent mesh or a failed write.
 /// Complexity: linear. Thread-safety: reentrant.
-/// `format` picks the first id and whether the marker column is written.
+/// `format` picks the first id and whether the marker column is written; `attributes`
+/// (`attribute_count` per vertex, vertex by vertex) are written after the coordinates.
+/// \throws pdd::error also when attributes is not attribute_count values per vertex.
 inline void write_node(const std::filesystem::path& path, const triangle_mesh& mesh,
-                       const triangle_format& format = {}) {
+                       const triangle_format& format = {}, std::span<const double> attributes = {},
+                       std::size_t attribute_count = 0) {
   detail::check_mesh_for_writing(mesh, path);
+  if (attributes.size() != attribute_count * mesh.vertices.size())
+    throw error("cannot write '" + path.string() + "': " + std::to_string(attributes.size()) +
+                " vertex attributes for " + std::to_string(mesh.vertices.size()) + " vertices x " +
+                std::to_string(attribute_count));
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    out.integer(mesh.vertices.size()).put(format.markers ? " 2 0 1\n" : " 2 0 0\n");
+    out.integer(mesh.vertices.size()).put(" 2 ").integer(attribute_count);
+    out.put(format.markers ? " 1\n" : " 0\n");
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i) {
       out.integer(i + format.first_index).put(' ').num(mesh.vertices[i].x).put(' ');
       out.num(mesh.vertices[i].y);
+      for (std::size_t k = 0; k < attribute_count; ++k)
+        out.put(' ').num(attributes[i * attribute_count + k]);
       if (format.markers) out.put(' ').integer(detail::vertex_marker(mesh, i));
       out.put('\n');
     }
@@ -58,22 +68,38 @@ inline void write_node(const std::filesystem::path& path, const triangle_mesh& m
 /// `format` picks the first id and the attribute column: `attributes` (one value per
 /// triangle, e.g. Triangle's regional attributes) when given, else the marker when
 /// format.marker_attribute, else none (header `<#triangles> 3 0`).
-/// \throws pdd::error also when attributes is non-empty and not one value per triangle.
+/// `extra_nodes` (Triangle's -o2): per triangle its nodes 4-6, written after the corners
+/// (header `<#triangles> 6 ...`).
+/// \throws pdd::error also when attributes or extra_nodes is non-empty and not one entry per
+/// triangle.
 inline void write_ele(const std::filesystem::path& path, const triangle_mesh& mesh,
-                      const triangle_format& format = {}, std::span<const double> attributes = {}) {
+                      const triangle_format& format = {}, std::span<const double> attributes = {},
+                      std::span<const std::array<index_t, 3>> extra_nodes = {}) {
   detail::check_mesh_for_writing(mesh, path);
-  if (!attributes.empty() && attributes.size() != mesh.triangles.size())
-    throw error("cannot write '" + path.string() + "': " + std::to_string(attributes.size()) +
-                " triangle attributes for " + std::to_string(mesh.triangles.size()) + " triangles");
+  const auto check_count = [&](std::size_t n, const char* what) {
+    if (n != 0 && n != mesh.triangles.size())
+      throw error("cannot write '" + path.string() + "': " + std::to_string(n) + " " + what +
+                  " for " + std::to_string(mesh.triangles.size()) + " triangles");
+  };
+  check_count(attributes.size(), "triangle attributes");
+  check_count(extra_nodes.size(), "six-node triangles");
+  for (const auto& nodes : extra_nodes)
+    for (const index_t v : nodes)
+      if (v >= mesh.vertices.size())
+        throw error("cannot write '" + path.string() + "': node " + std::to_string(v) +
+                    " of a six-node triangle is not a vertex");
   const bool column = !attributes.empty() || format.marker_attribute;
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    out.integer(mesh.triangles.size()).put(column ? " 3 1\n" : " 3 0\n");
+    out.integer(mesh.triangles.size()).put(extra_nodes.empty() ? " 3" : " 6");
+    out.put(column ? " 1\n" : " 0\n");
     for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
-      const auto& tri = mesh.triangles[t];
       out.integer(t + format.first_index);
-      for (const index_t v : tri)
+      for (const index_t v : mesh.triangles[t])
         out.put(' ').integer(std::size_t{v} + format.first_index);
+      if (!extra_nodes.empty())
+        for (const index_t v : extra_nodes[t])
+          out.put(' ').integer(std::size_t{v} + format.first_index);
       if (!attributes.empty())
         out.put(' ').num(attributes[t]);
       else if (column)

@@ -43,6 +43,12 @@ struct switches {
   bool neighbors = false;            ///< [n] neighbours of every triangle (.neigh)
   bool edges = false;                ///< [e] every edge of the mesh (.edge)
   bool voronoi = false;              ///< [v] the Voronoi diagram (.v.node, .v.edge)
+  /// [o2] six-node (subparametric quadratic) triangles: a node at the middle of every edge
+  bool second_order = false;
+  /// [i F l s L X] accepted and ignored: they choose Triangle's internal algorithms
+  /// (insertion, divide-and-conquer cuts, exact arithmetic), none of which change what pdd
+  /// makes; the letters as given, for -V to report.
+  std::string ignored;
 };
 
 } // namespace pdd::triangle
@@ -53,7 +59,8 @@ struct switches {
 namespace pdd::triangle {
 
 /// The switch letters parse_switches accepts, for messages and documentation.
-inline constexpr std::string_view supported_switches = "p q a A c e v Q V N E P B I O z j n";
+inline constexpr std::string_view supported_switches =
+    "p q a A c e v o2 Q V N E P B I O z j n i F l s L X";
 
 /// Parses a switch string as Triangle does: one letter per switch, in any order and any
 /// number of times; `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,
@@ -62,9 +69,10 @@ inline constexpr std::string_view supported_switches = "p q a A c e v Q V N E P 
 /// the regional area bounds, and `a` with and without a number may both appear. A single
 /// leading '-' is allowed. pdd-triangle parses each `-...` argument with it, passing the
 /// switches so far as `s` (Triangle reads every argument that starts with '-').
+/// `o` must be followed by `2` (o2: Triangle's only higher order).
 /// \throws switch_error naming the switch for every letter that is not supported (see
 ///   detail::refusal for the reasons given), an area that is not > 0 or a number that does
-///   not parse (`q1.2.3`) or an exponent after a number (`a2.6e-7`).
+///   not parse (`q1.2.3`), an exponent after a number (`a2.6e-7`) or an order other than 2.
 /// Complexity O(length). Thread-safety: reentrant.
 inline switches parse_switches(std::string_view text, switches s = {}) {
   if (text.starts_with('-')) text.remove_prefix(1);
@@ -87,6 +95,11 @@ inline switches parse_switches(std::string_view text, switches s = {}) {
           throw switch_error("switch -a" + std::string(number) +
                              ": the maximum area must be greater than zero");
       }
+      continue;
+    }
+    if (c == 'o') {
+      detail::read_order(text, i);
+      s.second_order = true;
       continue;
     }
     if (!detail::set_flag(s, c)) throw switch_error(detail::refusal(c));

@@ -11,10 +11,13 @@
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/detail/point_set_mesh.hpp>
 #include <pdd/triangle/detail/pslg_mesh.hpp>
+#include <pdd/triangle/detail/second_order.hpp>
+#include <pdd/triangle/detail/vertex_attributes.hpp>
 #include <pdd/triangle/switches.hpp>
 #include <pdd/triangle/triangulation.hpp>
 
 #include <array>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -31,20 +34,22 @@ namespace pdd::triangle {
 /// with a warning); hull vertices of marker 0 get marker 1; with c the hull's edges are the
 /// result's segments (mesh.segments holds them in every case).
 ///
-/// With p: q[angle], a[area], a alone (the regions' area bounds), A (regional attributes), O
+/// With p and neither q nor a: the constrained Delaunay triangulation of the PSLG, no Steiner
+/// point, as Triangle's bare -p (detail::constrained_delaunay). With p and q or a, a quality mesh:
+/// q[angle], a[area], a alone (the regions' area bounds), A (regional attributes), O
 /// (the hole points are dropped: the holes are then meshed, internal boundaries, as in
 /// Triangle), c (the convex hull of the vertices closed by segments of marker 1 and meshed
 /// whole, holes still carved). In both cases: j (drop unused vertices), n (the neighbour
 /// table), e (every edge with its marker), v (the Voronoi diagram of the mesh's triangles:
-/// circumcentres and the duals of the edges). Q, V, N, E, P, B, I, z concern files and
-/// printing: the caller (pdd-triangle, the Python module) honours them.
+/// circumcentres and the duals of the edges), o2 (a node in the middle of every edge, after the
+/// mesh's vertices: triangulation::second_order). Q, V, N, E, P, B, I and z concern files and
+/// printing: the caller (pdd-triangle, the Python module) honours them; i, F, l,
+/// s, L, X choose Triangle's internal algorithms and change nothing here.
 ///
 /// The domain with p is Triangle's (pdd::validate): every face of the segments' arrangement not
 /// reachable from infinity or from a hole point without crossing a segment; internal and
 /// dangling segments are mesh edges and isolated vertices inside the domain mesh vertices.
-/// Differences from Triangle: with p and without q the minimum angle is 0 but pdd's kernel still
-/// splits segments that a vertex encroaches (its mesh is conforming, not Triangle's bare
-/// constrained Delaunay triangulation). On a domain of closed loops (pdd::has_closed_loops) a
+/// Differences from Triangle: on a domain of closed loops (pdd::has_closed_loops) a
 /// region is a connected component of the domain; when regional area bounds differ between
 /// components, each component is meshed by its own pdd::generate run (the components share
 /// no segment, so the union is conforming). On any other domain (meshed whole by the
@@ -54,18 +59,33 @@ namespace pdd::triangle {
 /// \throws pdd::geometry_error for an invalid domain (after O and c), for a vertex set (or with
 ///   c a PSLG) of fewer than three distinct vertices or all collinear; everything
 ///   pdd::generate throws.
+/// Vertex attributes of the input (pslg::vertex_attributes) are carried to every output vertex:
+/// the input's own, linear interpolation over the input's constrained Delaunay triangulation
+/// at new vertices (detail::vertex_attribute_interpolator), the edge's mean at o2's nodes.
 /// Complexity: pdd::generate's (O(n log n) expected for a Delaunay triangulation), plus O(mesh)
 /// for the tables. Thread-safety: reentrant.
 inline triangulation triangulate(pslg domain, const switches& sw,
                                  const triangulate_options& o = {}) {
+  std::optional<detail::vertex_attribute_interpolator> attributes;
+  if (domain.vertex_attribute_count > 0) attributes.emplace(domain, sw.poly);
   triangulation out = sw.poly ? detail::triangulate_pslg(std::move(domain), sw, o)
                               : detail::triangulate_point_set(domain, sw, o);
-  if (sw.jettison) out.jettisoned_vertices = detail::jettison_unused_vertices(out.mesh);
-  if (!sw.neighbors && !sw.edges && !sw.voronoi) return out;
+  std::vector<double>* per_vertex = nullptr;
+  if (attributes) {
+    out.vertex_attributes = attributes->at(out.mesh.vertices);
+    out.vertex_attribute_count = attributes->count();
+    per_vertex = &out.vertex_attributes;
+  }
+  const std::size_t width = out.vertex_attribute_count;
+  if (sw.jettison)
+    out.jettisoned_vertices = detail::jettison_unused_vertices(out.mesh, per_vertex, width);
+  if (!sw.neighbors && !sw.edges && !sw.voronoi && !sw.second_order) return out;
   std::vector<std::array<long long, 3>> nb = triangle_neighbors(out.mesh);
   if (sw.edges || sw.voronoi)
     out.edges = detail::list_edges(out.mesh, nb, sw.voronoi ? &out.voronoi : nullptr);
   if (sw.voronoi) out.voronoi.vertices = detail::circumcentres(out.mesh);
+  if (sw.second_order)
+    out.second_order = detail::add_second_order_nodes(out.mesh, nb, per_vertex, width);
   if (sw.neighbors) out.neighbors = std::move(nb);
   return out;
 }

@@ -35,6 +35,11 @@ struct triangulation {
   /// The mesh: input vertices first, in input order (as Triangle numbers them), then the
   /// Steiner vertices; triangles counter-clockwise; segments the edges on input segments.
   triangle_mesh mesh;
+  /// The input's vertex attributes (pslg::vertex_attribute_count per vertex), vertex by vertex
+  /// for every vertex of `mesh`: the input's own, interpolated linearly at the others (see
+  /// triangle/detail/vertex_attributes.hpp); empty when the input has none.
+  std::vector<double> vertex_attributes;
+  std::size_t vertex_attribute_count = 0;
   /// Switch A: the regional attribute of every triangle (0 where no region seed lies).
   std::vector<double> triangle_attributes;
   /// Switch n: the triangle across from vertex i of triangle t, -1 on the boundary.
@@ -49,6 +54,10 @@ struct triangulation {
   /// boundary, else 0.
   std::vector<mesh_edge> edges;
   voronoi_diagram voronoi; ///< switch v
+  /// Switch o2: per triangle t the nodes 4, 5 and 6 of its six-node triangle, in the middle of
+  /// the edges opposite its corners 0, 1 and 2; they are vertices of `mesh` after all those the
+  /// triangles use as corners (no triangle has them as a corner).
+  std::vector<std::array<index_t, 3>> second_order;
   /// Without p: {vertex, the earlier equal vertex} for every input vertex equal to an earlier
   /// one; Triangle ignores it (it is in the output, used by no triangle) with a warning.
   std::vector<std::array<index_t, 2>> duplicate_vertices;

@@ -5,9 +5,9 @@
 /// domains have no internal segments (pdd::validate).
 #pragma once
 
+#include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/loops.hpp>
-#include <pdd/core/pslg.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_2_algorithms.h>

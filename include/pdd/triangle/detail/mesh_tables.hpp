@@ -73,17 +73,26 @@ inline void input_vertices_first(triangle_mesh& m, const pslg& input) {
   renumber_vertices(m, new_id, next);
 }
 
-/// Drops the vertices no triangle uses (Triangle's switch j), keeping the order of the rest.
-/// Returns the number dropped.
-inline std::size_t jettison_unused_vertices(triangle_mesh& m) {
+/// Drops the vertices no triangle uses (Triangle's switch j), keeping the order of the rest,
+/// and their `width` values in `per_vertex` (vertex by vertex) with them. Returns the number
+/// dropped.
+inline std::size_t jettison_unused_vertices(triangle_mesh& m,
+                                            std::vector<double>* per_vertex = nullptr,
+                                            std::size_t width = 0) {
   std::vector<char> used(m.vertices.size(), 0);
   for (const auto& t : m.triangles)
     for (const index_t i : t)
       used[i] = 1;
   std::vector<index_t> new_id(m.vertices.size(), no_index);
   std::size_t next = 0;
-  for (std::size_t i = 0; i < used.size(); ++i)
-    if (used[i]) new_id[i] = static_cast<index_t>(next++);
+  for (std::size_t i = 0; i < used.size(); ++i) {
+    if (!used[i]) continue;
+    if (per_vertex)
+      for (std::size_t k = 0; k < width; ++k)
+        (*per_vertex)[next * width + k] = (*per_vertex)[i * width + k];
+    new_id[i] = static_cast<index_t>(next++);
+  }
+  if (per_vertex) per_vertex->resize(next * width);
   const std::size_t dropped = m.vertices.size() - next;
   if (dropped != 0) renumber_vertices(m, new_id, next);
   return dropped;

@@ -1,12 +1,13 @@
 /// \file pslg_mesh.hpp
-/// Implementation of pdd::triangle::triangulate with p: the PSLG meshed by pdd::generate (with
-/// c, its vertices' convex hull closed by segments first), the regional paths, Triangle's
-/// numbering of the vertices.
+/// Implementation of pdd::triangle::triangulate with p: the PSLG (with c, its vertices' convex
+/// hull closed by segments first) triangulated without Steiner points, or meshed by
+/// pdd::generate for q and a, the regional paths, Triangle's numbering of the vertices.
 #pragma once
 
 #include <pdd/core/pslg.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/validate.hpp>
+#include <pdd/triangle/detail/constrained_delaunay.hpp>
 #include <pdd/triangle/detail/face_regions.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/detail/point_set.hpp>
@@ -48,13 +49,15 @@ inline void close_convex_hull(pslg& g) {
   }
 }
 
-/// Meshes a PSLG with pdd's pipeline as `triangle -p<sw>` would (see triangulate); the input
-/// vertices come first in the result, in input order.
+/// Meshes a PSLG as `triangle -p<sw>` would (see triangulate): without q or a its constrained
+/// Delaunay triangulation, with them pdd's pipeline; the input vertices come first in the
+/// result, in input order.
 inline triangulation triangulate_pslg(pslg domain, const switches& sw,
                                       const triangulate_options& o) {
   if (sw.ignore_holes) domain.holes.clear();
   if (sw.convex) close_convex_hull(domain);
-  const bool closed_loops = has_closed_loops(domain); // validates
+  if (!sw.quality) return constrained_delaunay(std::move(domain), sw); // no Steiner point
+  const bool closed_loops = has_closed_loops(domain);                  // validates
   const generate_options gopt = options_for(sw, o);
   triangulation out;
   const bool regional = !domain.regions.empty() && (sw.regional_areas || sw.regional_attributes);

@@ -34,12 +34,12 @@ inline constexpr refused_switches refusal_reasons[] = {
     {"D", " (conforming Delaunay) is not supported: pdd's meshes are constrained Delaunay"},
     {"u", " (a user-defined triunsuitable test) is not supported"},
     {"wW", " (weighted Delaunay) is not supported"},
-    {"o", " (second-order triangles) is not supported"},
     {"Y", " (no Steiner points on the boundary) is not supported: pdd splits boundary segments "
           "when refinement needs it"},
     {"S", " (a Steiner point budget) is not supported"},
     {"g", " (OFF output for Geomview) is not supported"},
-    {"iFlsLCX", " (a choice of Triangle's internal algorithms or checks) is not supported"},
+    {"C", " (Triangle's check of its own data structures) is not supported: pdd-verify checks "
+          "a mesh (exact Delaunay, conformity, the angle and area bounds)"},
     {"hH?", " (help) is not a meshing switch; run pdd-triangle --help"},
 };
 
@@ -48,9 +48,23 @@ inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
   for (const refused_switches& r : refusal_reasons)
     if (r.letters.find(c) != std::string_view::npos) return sw + std::string(r.reason);
-  return sw +
-         " is not a Triangle switch pdd supports (supported: p q a A c e v Q V N E P B I O z j n)";
+  return sw + " is not a Triangle switch pdd supports (supported: p q a A c e v o2 Q V N E P B "
+              "I O z j n, and i F l s L X, which pdd ignores)";
 }
+
+/// The order after `o` at position i (Triangle's -o2; no other order exists): advances i past
+/// it. \throws switch_error for a missing or other order.
+inline void read_order(std::string_view text, std::size_t& i) {
+  if (i < text.size() && text[i] == '2') {
+    ++i;
+    return;
+  }
+  throw switch_error("switch -o" + std::string(text.substr(i, 1)) +
+                     ": Triangle's only higher order is -o2 (six-node triangles)");
+}
+
+/// Triangle's switches that choose its internal algorithms (pdd accepts and ignores them).
+inline constexpr std::string_view internal_switches = "iFlsLX";
 
 /// A number after q or a, read with std::from_chars (digits and '.' only, the characters
 /// Triangle reads there). \throws switch_error for `1.2.3` and the like.
@@ -99,11 +113,15 @@ inline constexpr flag_switch flag_switches[] = {
     {'n', &switches::neighbors},
 };
 
-/// Sets the flag of a letter without a number (V counts); false for letters pdd does not
-/// support.
+/// Sets the flag of a letter without a number (V counts; i F l s L X are kept in
+/// switches::ignored); false for letters pdd does not support.
 inline bool set_flag(switches& s, char c) {
   if (c == 'V') {
     ++s.verbose;
+    return true;
+  }
+  if (internal_switches.find(c) != std::string_view::npos) {
+    s.ignored += c;
     return true;
   }
   for (const flag_switch& f : flag_switches)
@@ -146,7 +164,8 @@ inline std::string format_switches(const switches& s) {
   flag(s.neighbors, 'n');
   flag(s.edges, 'e');
   flag(s.voronoi, 'v');
-  return out;
+  if (s.second_order) out += "o2";
+  return out + s.ignored;
 }
 
 } // namespace pdd::triangle::detail
