@@ -40,9 +40,7 @@ pslg pslg_from_dict(const py::dict& tri) {
   for (const auto& item : tri) {
     const auto key = py::str(item.first).cast<std::string>();
     if (key == "triangles" || key == "triangle_max_area" || key == "triangle_attributes")
-      throw bad_argument("'" + key +
-                         "': refining a previous mesh (Triangle's -r) is not "
-                         "supported");
+      continue; // the previous mesh of switch r (previous_from_dict)
     if (!known.count(key)) throw bad_argument("unknown key '" + key + "' in the input dict");
   }
   if (!tri.contains("vertices")) throw bad_argument("the input dict needs 'vertices'");
@@ -68,13 +66,54 @@ pslg pslg_from_dict(const py::dict& tri) {
   return g;
 }
 
-/// Without p Triangle reads only the vertices: say so when the dict holds more.
+/// Without p Triangle reads only the vertices, without r no previous mesh: say so when the
+/// dict holds more.
 void warn_unread_keys(const py::dict& tri, const triangle::switches& sw) {
-  if (sw.poly) return;
+  if (!sw.refine)
+    for (const char* key : {"triangles", "triangle_max_area", "triangle_attributes"})
+      if (tri.contains(key) && py::len(tri[key]) > 0)
+        warn(std::string("'") + key +
+             "' are not read without switch r (refine a previous mesh), as in Triangle");
+  if (sw.poly || sw.refine) return;
   for (const char* key : {"segments", "holes", "regions"})
     if (tri.contains(key) && py::len(tri[key]) > 0)
       warn(std::string("'") + key +
            "' are not read without switch p: the vertices are triangulated (as Triangle does)");
+}
+
+/// One value per triangle from an (n,) or (n, 1) array (`what` names it in errors).
+std::vector<double> per_triangle(const py::handle& obj, std::size_t n, const std::string& what) {
+  const auto a = as_table<double>(obj, 1, what);
+  if (static_cast<std::size_t>(a.shape(0)) != n)
+    throw bad_argument(what + " has " + std::to_string(a.shape(0)) + " rows for " +
+                       std::to_string(n) + " triangles");
+  return {a.data(), a.data() + n};
+}
+
+/// Switch r: the previous mesh of the dict (its triangles, and with them triangle_max_area,
+/// used with a bare a, and triangle_attributes).
+previous_mesh previous_from_dict(const py::dict& tri, pslg g) {
+  if (!tri.contains("triangles") || py::len(tri["triangles"]) == 0)
+    throw bad_argument("switch r refines a previous mesh: the dict needs 'triangles'");
+  previous_mesh m;
+  const auto t = as_table<long long>(tri["triangles"], 3, "triangles");
+  for (py::ssize_t i = 0; i < t.shape(0); ++i) {
+    std::array<index_t, 3> tr{};
+    for (int k = 0; k < 3; ++k) {
+      const long long v = t.at(i, k);
+      if (v < 0 || static_cast<std::size_t>(v) >= g.vertices.size())
+        throw bad_argument("triangles row " + std::to_string(i) + " refers to vertex " +
+                           std::to_string(v) + " of " + std::to_string(g.vertices.size()));
+      tr[k] = static_cast<index_t>(v);
+    }
+    m.triangles.push_back(tr);
+  }
+  for (const auto& [key, into] : {std::pair{"triangle_max_area", &m.triangle_areas},
+                                  std::pair{"triangle_attributes", &m.triangle_attributes}})
+    if (tri.contains(key) && py::len(tri[key]) > 0)
+      *into = per_triangle(tri[key], m.triangles.size(), key);
+  m.input = std::move(g);
+  return m;
 }
 
 /// The dict pdd.triangulate returns (the `triangle` package's keys for the switches).
@@ -106,7 +145,8 @@ py::dict triangulate_result(const py::dict& tri, const triangle::switches& sw,
   }
   if (sw.poly && tri.contains("holes")) out["holes"] = tri["holes"];
   if (sw.poly && tri.contains("regions")) out["regions"] = tri["regions"];
-  if (sw.regional_attributes) out["triangle_attributes"] = v.attributes();
+  if (sw.regional_attributes || !v.data().attributes.empty())
+    out["triangle_attributes"] = v.attributes();
   if (sw.neighbors) out["neighbors"] = v.neighbors();
   if (sw.edges) add_edges(out, t.edges, markers);
   if (sw.voronoi) out["voronoi"] = voronoi_dict(t.voronoi);
@@ -120,7 +160,11 @@ py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned thre
   pslg g = pslg_from_dict(tri);
   warn_unread_keys(tri, sw);
   triangle::triangulation t;
-  {
+  if (sw.refine) {
+    const previous_mesh previous = previous_from_dict(tri, std::move(g));
+    py::gil_scoped_release release;
+    t = triangle::refine(previous, sw, {threads, subdomains});
+  } else {
     py::gil_scoped_release release;
     t = triangle::triangulate(std::move(g), sw, {threads, subdomains});
   }
@@ -325,8 +369,10 @@ n; I is accepted and means nothing without files; i, F, l, s, L, X are accepted 
 (Triangle's internal algorithms). p alone is the constrained Delaunay triangulation (no
 Steiner point). Numbering is zero-based (the triangle package's 'z'). 'vertex_attributes' (n,)
 or (n, k) are carried to every output vertex: interpolated linearly over the input's constrained
-Delaunay triangulation at new vertices, the edge's mean at o2's nodes. Any other switch, unknown
-key or 'triangles' raises ValueError. A vertex equal to an earlier one
+Delaunay triangulation at new vertices, the edge's mean at o2's nodes. r refines the previous
+mesh of 'triangles' (its vertices kept, first; with a bare a its 'triangle_max_area', <= 0: none;
+its 'triangle_attributes' carried to the new triangles inside each old one); without r those keys
+are not read, with a warning. Any other switch or unknown key raises ValueError. A vertex equal to an earlier one
 (without p) is ignored with a UserWarning, as Triangle ignores it.
 Returns a dict: vertices, vertex_markers (n, 1), vertex_attributes (n, k) (when given),
 triangles (t, 3) int32, segments and

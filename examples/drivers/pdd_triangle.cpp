@@ -11,6 +11,7 @@
 // Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 4 internal error.
 #include <pdd/errors.hpp>
 #include <pdd/io/poly.hpp>
+#include <pdd/io/previous_mesh.hpp>
 #include <pdd/io/triangle_files.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/region_attributes.hpp>
@@ -128,6 +129,15 @@ pdd::pslg read_input(const pdd::triangle::file_names& f, const pdd::triangle::sw
   return sw.poly ? pdd::read_poly(f.poly) : pdd::read_node(f.in_node);
 }
 
+/// -r: the previous mesh (.node, .ele; with -p its .poly; with a bare -a its .area if present).
+pdd::previous_mesh read_previous(const pdd::triangle::file_names& f,
+                                 const pdd::triangle::switches& sw) {
+  if (!sw.quiet) std::printf("Opening %s.\nOpening %s.\n", f.in_node.c_str(), f.in_ele.c_str());
+  const bool area = !f.in_area.empty() && std::filesystem::exists(f.in_area);
+  if (!sw.quiet && area) std::printf("Opening %s.\n", f.in_area.c_str());
+  return pdd::read_previous_mesh(f.base, sw.poly, area);
+}
+
 /// Triangle's warning for every input vertex equal to an earlier one (without -p).
 void input_warnings(const pdd::pslg& in, const pdd::triangle::triangulation& t) {
   for (const auto& d : t.duplicate_vertices)
@@ -165,6 +175,7 @@ void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::swit
 
 /// What pdd-triangle is about to do, as Triangle announces it; with V the switches it ignores.
 void announce(const pdd::triangle::switches& sw) {
+  if (sw.refine) std::printf("Refining the previous mesh.\n");
   std::printf(sw.quality ? "Meshing with pdd's decoupled pipeline.\n"
               : sw.poly  ? "Constructing constrained Delaunay triangulation (CGAL).\n"
                          : "Constructing Delaunay triangulation (CGAL).\n");
@@ -180,12 +191,18 @@ int run(const cli_options& o) {
   pdd::triangle::switches sw = read_switches(o);
   pdd::triangle::switches probe = sw;
   const std::string base = pdd::triangle::make_file_names(o.input, probe).base; // sets p
-  const bool node_read = !probe.poly || std::filesystem::exists(base + ".node");
+  const bool node_read = !probe.poly || probe.refine || std::filesystem::exists(base + ".node");
   const pdd::triangle::file_names f = pdd::triangle::make_file_names(o.input, sw, node_read);
-  const pdd::pslg in = read_input(f, sw);
+  pdd::previous_mesh previous;
+  if (sw.refine)
+    previous = read_previous(f, sw);
+  else
+    previous.input = read_input(f, sw);
+  const pdd::pslg& in = previous.input;
   if (!sw.quiet) announce(sw);
   const auto tm = std::chrono::steady_clock::now();
-  const pdd::triangle::triangulation t = pdd::triangle::triangulate(in, sw, o.run);
+  const pdd::triangle::triangulation t = sw.refine ? pdd::triangle::refine(previous, sw, o.run)
+                                                   : pdd::triangle::triangulate(in, sw, o.run);
   if (!sw.quiet) input_warnings(in, t);
   if (!sw.quiet) report_meshing(t, ms_since(tm));
   write_outputs(f, sw, in, t);

@@ -85,7 +85,6 @@ def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
 
 @pytest.mark.parametrize("opts, message", [
     ("pqD", "switch -D"),
-    ("pq30r", "switch -r"),
     ("a2.6e-7", "no exponent"),
     ("pa0", "greater than zero"),
     ("pqY", "switch -Y"),
@@ -231,6 +230,25 @@ def test_vertex_attributes_are_interpolated_linearly(opts):
     assert np.allclose(att[:, 0], 1 + 2 * v[:, 0] - 3 * v[:, 1], rtol=0, atol=1e-9)
     assert np.allclose(att[:, 1], 7, rtol=0, atol=1e-9)
     assert np.array_equal(att[:len(x), 0], key["vertex_attributes"][:, 0])  # the input's own
+
+
+def test_r_refines_a_previous_mesh():
+    coarse = pdd.triangulate(read_poly("key.poly"), "pq")
+    v0, t0 = coarse["vertices"], coarse["triangles"]
+    left = v0[t0].mean(axis=1)[:, 0] < 0
+    prev = dict(coarse, triangle_max_area=np.where(left, 0.0005, -1.0),
+                triangle_attributes=np.where(left, 1.0, 2.0)[:, None])
+    out = pdd.triangulate(prev, "rqa")
+    v, t, att = out["vertices"], out["triangles"], out["triangle_attributes"]
+    assert np.array_equal(v[:len(v0)], v0)  # the previous vertices first
+    assert np.isclose(areas(v, t).sum(), areas(v0, t0).sum())
+    assert set(np.unique(att)) == {1.0, 2.0}
+    assert areas(v, t)[att[:, 0] == 1.0].max() <= 0.0005 * (1 + 1e-12)
+    assert len(t) > len(t0)
+    with pytest.raises(ValueError, match="needs 'triangles'"):
+        pdd.triangulate(read_poly("key.poly"), "rq")
+    with pytest.warns(UserWarning, match="not read without switch r"):
+        pdd.triangulate(coarse, "pq")
 
 
 def test_triangles_internal_switches_are_ignored():

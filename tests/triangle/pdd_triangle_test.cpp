@@ -109,6 +109,25 @@ TEST(PddTriangle, SecondOrderPAloneAndIgnoredSwitches) {
   EXPECT_EQ(node.substr(0, node.find(' ')), std::to_string(key.vertices.size()));
 }
 
+TEST(PddTriangle, RefinesItsOwnOutput) {
+  const fs::path dir = folder_with_key("pt_r");
+  auto r = run_in(dir, "-pqQ key.poly");
+  ASSERT_EQ(r.code, 0) << r.output;
+  r = run_in(dir, "-rpq30a0.002 key.1");
+  ASSERT_EQ(r.code, 0) << r.output;
+  EXPECT_NE(r.output.find("Refining the previous mesh."), std::string::npos) << r.output;
+  const pdd::pslg before = pdd::read_node(dir / "key.1.node");
+  const pdd::pslg after = pdd::read_node(dir / "key.2.node");
+  ASSERT_GT(after.vertices.size(), before.vertices.size());
+  EXPECT_TRUE(std::equal(before.vertices.begin(), before.vertices.end(), after.vertices.begin()));
+  EXPECT_TRUE(fs::exists(dir / "key.2.ele"));
+  EXPECT_TRUE(fs::exists(dir / "key.2.poly"));
+  // an .ele or .area name is read only with -r
+  r = run_in(dir, "-pq key.1.ele");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.output.find("only to refine a previous mesh (-r)"), std::string::npos) << r.output;
+}
+
 TEST(PddTriangle, SwitchesChangeTheFiles) {
   const fs::path dir = folder_with_key("pt_switches");
   auto r = run_in(dir, "-pq -a0.02 -zBAnQ key.poly --threads 2 --subdomains 1");
@@ -163,9 +182,8 @@ TEST(PddTriangle, RefusesWhatItCannotDo) {
   };
   for (const refusal& c :
        {refusal{"-pqY key.poly", "switch -Y", 2},
-        refusal{"-rpq key.1", "switch -r (refine a previous mesh)", 2},
         refusal{"-q key.node", "cannot open 'key.node'", 1},
-        refusal{"-pq key.1.ele", "refining a previous mesh", 2},
+        refusal{"-pq key.1.ele", "only to refine a previous mesh (-r)", 2},
         refusal{"-pa0 key.poly", "greater than zero", 2},
         refusal{"-pq missing.poly", "missing.poly", 1}, refusal{"-pq", "input is required", 2},
         refusal{"-pq key.poly --threads 0", "--threads", 2}}) {

@@ -1,6 +1,7 @@
 // pdd::triangle::triangulate and make_file_names: Triangle's semantics of p, q, a, a alone,
 // A, O, j, n on pdd meshes, Triangle's output file names, and determinism across threads.
 #include <pdd/io/poly.hpp>
+#include <pdd/io/previous_mesh.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/triangle/file_names.hpp>
@@ -11,6 +12,7 @@
 #include "test_support.hpp"
 #include "verified.hpp"
 
+#include <algorithm>
 #include <array>
 #include <string>
 #include <tuple>
@@ -240,6 +242,60 @@ TEST(Triangulate, SecondOrderNodesSitInTheMiddleOfEveryEdgeOnce) {
     EXPECT_EQ(t.mesh.vertex_markers[v] != 0, uses[v] == 1) << "marked on the boundary only";
   }
   EXPECT_EQ(boundary, t.mesh.segments.size()) << "key.poly: every boundary edge on a segment";
+}
+
+/// The previous mesh of Triangle's -r from a triangulate result.
+pdd::previous_mesh previous_of(const tri::triangulation& t) {
+  pdd::previous_mesh m;
+  m.input.vertices = t.mesh.vertices;
+  m.input.vertex_markers = t.mesh.vertex_markers;
+  m.triangles = t.mesh.triangles;
+  return m;
+}
+
+TEST(Triangulate, RefineKeepsTheVerticesAndTheDomain) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const auto coarse = tri::triangulate(key, tri::parse_switches("pq"));
+  const pdd::previous_mesh prev = previous_of(coarse);
+  const auto fine = tri::refine(prev, tri::parse_switches("rq30a0.002"));
+  ASSERT_GT(fine.mesh.vertices.size(), prev.input.vertices.size());
+  EXPECT_TRUE(std::equal(prev.input.vertices.begin(), prev.input.vertices.end(),
+                         fine.mesh.vertices.begin()))
+      << "the previous vertices first, in their order";
+  pdd::verify_options vo;
+  vo.criteria = {.min_angle_deg = 30.0, .max_area = 0.002};
+  const pdd::verification_report rep = pdd::verify(fine.mesh, key, vo); // the key's own domain
+  EXPECT_TRUE(rep.ok()) << pdd::test::describe(rep);
+  // r alone: the same vertices, no Steiner point, as many triangles (Euler)
+  const auto same = tri::refine(prev, tri::parse_switches("r"));
+  EXPECT_EQ(same.mesh.vertices, prev.input.vertices);
+  EXPECT_EQ(same.mesh.triangles.size(), prev.triangles.size());
+}
+
+TEST(Triangulate, RefineWithPerTriangleAreasAndAttributes) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  const auto coarse = tri::triangulate(key, tri::parse_switches("pq"));
+  pdd::previous_mesh prev = previous_of(coarse);
+  for (std::size_t t = 0; t < prev.triangles.size(); ++t) { // bounded left of x = 0 only
+    const bool left = centroid_x(coarse.mesh, t) < 0.0;
+    prev.triangle_areas.push_back(left ? 0.0005 : -1.0);
+    prev.triangle_attributes.push_back(left ? 1.0 : 2.0);
+  }
+  const auto r = tri::refine(prev, tri::parse_switches("rqa"));
+  ASSERT_EQ(r.triangle_attributes.size(), r.mesh.triangles.size());
+  std::size_t bounded = 0;
+  for (std::size_t t = 0; t < r.mesh.triangles.size(); ++t) {
+    const double attribute = r.triangle_attributes[t];
+    ASSERT_TRUE(attribute == 1.0 || attribute == 2.0) << t;
+    if (attribute == 1.0) {
+      ++bounded;
+      EXPECT_LE(area(r.mesh, t), 0.0005 * (1 + 1e-12)) << t;
+    }
+  }
+  EXPECT_GT(bounded, 100u);
+  // the ids are checked
+  prev.triangles.back()[2] = static_cast<pdd::index_t>(prev.input.vertices.size());
+  EXPECT_THROW(tri::refine(prev, tri::parse_switches("rq")), pdd::geometry_error);
 }
 
 TEST(Triangulate, JettisonKeepsEveryUsedVertex) {

@@ -3,11 +3,11 @@
 /// bins), with the smallest and largest angle marked.
 #pragma once
 
+#include <pdd/core/triangle_mesh.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/detail/mesh.hpp>
 #include <pdd/io/detail/mesh_picture.hpp>
 #include <pdd/io/detail/text.hpp>
-#include <pdd/core/triangle_mesh.hpp>
 
 #include <algorithm>
 #include <cstddef>

@@ -15,9 +15,10 @@ namespace pdd::triangle {
 
 /// Input and output names of one run (empty: not read / not written).
 struct file_names {
-  std::string base;    ///< the input name without its extension (`dir/key`, `dir/key.1`)
-  std::string poly;    ///< the .poly read (-p)
-  std::string in_node; ///< the .node read (without -p)
+  std::string base;            ///< the input name without its extension (`dir/key`, `dir/key.1`)
+  std::string poly;            ///< the .poly read (-p)
+  std::string in_node;         ///< the .node read (without -p; with -r)
+  std::string in_ele, in_area; ///< -r: the previous mesh's .ele, and with a bare -a its .area
   std::string node, ele, out_poly, neigh; ///< the outputs
   std::string edge, v_node, v_edge;       ///< -e, -v
 };
@@ -37,25 +38,28 @@ inline bool strip_suffix(std::string& name, std::string_view ext) {
 /// (`key.1.poly` writes `key.2.*`, as Triangle numbers iterations), `<base>` with -I. Outputs that
 /// -N, -E, -P suppress are left empty; with -I, the .poly is never written and neither is the .node
 /// when `node_was_read` (Triangle will not overwrite its input); the .poly only with -p or -c;
-/// .neigh only with -n, .edge with -e, .v.node and .v.edge with -v. \throws
-/// switch_error for an `.area` or `.ele` name (refining a mesh is not supported).
+/// .neigh only with -n, .edge with -e, .v.node and .v.edge with -v. With -r the previous mesh is
+/// `<base>.node` and `<base>.ele` (with -p its `<base>.poly`, with a bare -a its `<base>.area`,
+/// read if it exists). \throws switch_error for an `.area` or `.ele` name without -r.
 inline file_names make_file_names(std::string name, switches& sw, bool node_was_read = false) {
-  if (detail::strip_suffix(name, ".area"))
-    throw switch_error("'" + name +
-                       ".area': per-triangle area constraints (.area files, -ra) "
-                       "are not supported");
+  for (const char* ext : {".area", ".ele"})
+    if (detail::strip_suffix(name, ext) && !sw.refine)
+      throw switch_error("'" + name + ext + "': an " + (ext + 1) +
+                         " file is read only to refine a previous mesh (-r)");
   detail::strip_suffix(name, ".node");
   if (detail::strip_suffix(name, ".poly")) sw.poly = true;
-  if (detail::strip_suffix(name, ".ele"))
-    throw switch_error("'" + name +
-                       ".ele': refining a previous mesh (an .ele input, Triangle's "
-                       "-r) is not supported");
   file_names f;
   f.base = name;
-  if (sw.poly)
-    f.poly = name + ".poly";
-  else
+  if (sw.refine) {
     f.in_node = name + ".node";
+    f.in_ele = name + ".ele";
+    if (sw.poly) f.poly = name + ".poly";
+    if (sw.regional_areas) f.in_area = name + ".area";
+  } else if (sw.poly) {
+    f.poly = name + ".poly";
+  } else {
+    f.in_node = name + ".node";
+  }
   std::string stem = name + ".1";
   const std::size_t dot = name.find_last_of('.');
   if (dot != std::string::npos && dot > 0 && dot + 1 < name.size() &&

@@ -21,6 +21,8 @@ public:
 /// The switches of one Triangle run that pdd supports (Triangle's letters in brackets).
 struct switches {
   bool poly = false; ///< [p] mesh the PSLG of a .poly (set by a .poly file name too)
+  /// [r] refine a previous mesh (.node and .ele; with p its .poly; with a bare a its .area)
+  bool refine = false;
   /// [c] segments on the convex hull: with p, the hull of the PSLG's vertices is meshed; without
   /// p, the hull's edges are output as segments (a .poly file)
   bool convex = false;
@@ -60,7 +62,7 @@ namespace pdd::triangle {
 
 /// The switch letters parse_switches accepts, for messages and documentation.
 inline constexpr std::string_view supported_switches =
-    "p q a A c e v o2 Q V N E P B I O z j n i F l s L X";
+    "p r q a A c e v o2 Q V N E P B I O z j n i F l s L X";
 
 /// Parses a switch string as Triangle does: one letter per switch, in any order and any
 /// number of times; `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,

@@ -6,11 +6,13 @@
 
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/io/previous_mesh.hpp>
 #include <pdd/mesh/region_attributes.hpp>
 #include <pdd/triangle/detail/edge_tables.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/detail/point_set_mesh.hpp>
 #include <pdd/triangle/detail/pslg_mesh.hpp>
+#include <pdd/triangle/detail/refine.hpp>
 #include <pdd/triangle/detail/second_order.hpp>
 #include <pdd/triangle/detail/vertex_attributes.hpp>
 #include <pdd/triangle/switches.hpp>
@@ -22,6 +24,29 @@
 #include <vector>
 
 namespace pdd::triangle {
+
+namespace detail {
+/// The tables after meshing: vertex attributes (the input's, interpolated by `attributes` at
+/// new vertices), j, then n, e, v and o2 on the final mesh.
+inline void finish_tables(triangulation& out, const switches& sw,
+                          const vertex_attribute_interpolator* attributes) {
+  std::vector<double>* per_vertex = nullptr;
+  if (attributes) {
+    out.vertex_attributes = attributes->at(out.mesh.vertices);
+    out.vertex_attribute_count = attributes->count();
+    per_vertex = &out.vertex_attributes;
+  }
+  const std::size_t width = out.vertex_attribute_count;
+  if (sw.jettison) out.jettisoned_vertices = jettison_unused_vertices(out.mesh, per_vertex, width);
+  if (!sw.neighbors && !sw.edges && !sw.voronoi && !sw.second_order) return;
+  std::vector<std::array<long long, 3>> nb = triangle_neighbors(out.mesh);
+  if (sw.edges || sw.voronoi)
+    out.edges = list_edges(out.mesh, nb, sw.voronoi ? &out.voronoi : nullptr);
+  if (sw.voronoi) out.voronoi.vertices = circumcentres(out.mesh);
+  if (sw.second_order) out.second_order = add_second_order_nodes(out.mesh, nb, per_vertex, width);
+  if (sw.neighbors) out.neighbors = std::move(nb);
+}
+} // namespace detail
 
 /// Meshes `domain` as `triangle -<sw>` would mesh it, with pdd's pipeline.
 ///
@@ -70,23 +95,33 @@ inline triangulation triangulate(pslg domain, const switches& sw,
   if (domain.vertex_attribute_count > 0) attributes.emplace(domain, sw.poly);
   triangulation out = sw.poly ? detail::triangulate_pslg(std::move(domain), sw, o)
                               : detail::triangulate_point_set(domain, sw, o);
-  std::vector<double>* per_vertex = nullptr;
-  if (attributes) {
-    out.vertex_attributes = attributes->at(out.mesh.vertices);
-    out.vertex_attribute_count = attributes->count();
-    per_vertex = &out.vertex_attributes;
+  detail::finish_tables(out, sw, attributes ? &*attributes : nullptr);
+  return out;
+}
+
+/// Refines a previous mesh as `triangle -r<sw>` does (its vertices kept, in their order, first):
+/// the domain is what its triangles cover (its boundary edges segments of marker 1, its
+/// segments kept with their markers; a hole wherever it has none), meshed by pdd::generate
+/// with q[angle] and a[area]; with a bare a, its per-triangle area bounds (Triangle's .area, <=
+/// 0: none) as a sizing field (pdd::background_mesh_sizing); without q or a, the constrained
+/// Delaunay triangulation of its vertices and boundary. Its triangle attributes go to the new
+/// triangles inside each old one, its vertex attributes are interpolated linearly in the old
+/// triangles. j, n, e, v, o2 as in triangulate.
+/// \throws pdd::geometry_error for ids out of range, counts that disagree, or a previous mesh
+///   that is not a valid triangulation (pdd::validate); everything pdd::generate throws.
+inline triangulation refine(const previous_mesh& m, const switches& sw,
+                            const triangulate_options& o = {}) {
+  std::optional<detail::vertex_attribute_interpolator> attributes;
+  if (m.input.vertex_attribute_count > 0) {
+    detail::check_previous(m);
+    pslg edges = m.input; // the previous triangulation is the edges' constrained one
+    edges.segments.clear();
+    for (const auto& [key, count] : detail::edge_uses(m.triangles))
+      edges.add_segment(static_cast<index_t>(key >> 32), static_cast<index_t>(key));
+    attributes.emplace(edges, true);
   }
-  const std::size_t width = out.vertex_attribute_count;
-  if (sw.jettison)
-    out.jettisoned_vertices = detail::jettison_unused_vertices(out.mesh, per_vertex, width);
-  if (!sw.neighbors && !sw.edges && !sw.voronoi && !sw.second_order) return out;
-  std::vector<std::array<long long, 3>> nb = triangle_neighbors(out.mesh);
-  if (sw.edges || sw.voronoi)
-    out.edges = detail::list_edges(out.mesh, nb, sw.voronoi ? &out.voronoi : nullptr);
-  if (sw.voronoi) out.voronoi.vertices = detail::circumcentres(out.mesh);
-  if (sw.second_order)
-    out.second_order = detail::add_second_order_nodes(out.mesh, nb, per_vertex, width);
-  if (sw.neighbors) out.neighbors = std::move(nb);
+  triangulation out = detail::refine_previous(m, sw, o);
+  detail::finish_tables(out, sw, attributes ? &*attributes : nullptr);
   return out;
 }
 

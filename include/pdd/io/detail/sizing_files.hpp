@@ -71,8 +71,11 @@ inline node_with_areas parse_area_node(std::string_view text, const std::string&
 }
 
 /// Reads a .ele file of 3-node triangles over `nv` vertices numbered from `first_id`.
+/// With `attributes`, the one attribute column of every triangle goes there (none: empty; more
+/// than one is refused); without, attributes are read and dropped.
 inline std::vector<std::array<index_t, 3>> parse_ele(std::string_view text, const std::string& file,
-                                                     std::size_t nv, long long first_id) {
+                                                     std::size_t nv, long long first_id,
+                                                     std::vector<double>* attributes = nullptr) {
   triangle_file_parser p(text, file);
   const auto header = [] { return "the triangle header '<#triangles> 3 <#attributes>'"; };
   p.next(header);
@@ -83,6 +86,10 @@ inline std::vector<std::array<index_t, 3>> parse_ele(std::string_view text, cons
   const std::size_t na = p.count(2, "the number of triangle attributes");
   p.check_fits(nt, "the number of triangles");
   p.check_fits(na, "the number of triangle attributes");
+  if (attributes && na > 1)
+    p.fail("expected at most one triangle attribute (pdd carries one attribute per triangle), "
+           "found " +
+           std::to_string(na));
   std::vector<std::array<index_t, 3>> ts;
   ts.reserve(nt);
   const long long hi = first_id + static_cast<long long>(nv) - 1;
@@ -102,8 +109,10 @@ inline std::vector<std::array<index_t, 3>> parse_ele(std::string_view text, cons
                std::to_string(hi) + "], found " + std::to_string(v));
       t[k] = static_cast<index_t>(v - first_id);
     }
-    for (std::size_t a = 0; a < na; ++a)
-      (void)p.real(4 + a, "a triangle attribute");
+    for (std::size_t a = 0; a < na; ++a) {
+      const double value = p.real(4 + a, "a triangle attribute");
+      if (attributes) attributes->push_back(value);
+    }
     ts.push_back(t);
   }
   return ts;

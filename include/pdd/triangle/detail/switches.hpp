@@ -29,8 +29,6 @@ struct refused_switches {
 };
 
 inline constexpr refused_switches refusal_reasons[] = {
-    {"r", " (refine a previous mesh) is not supported: pdd does not read a previous mesh's "
-          ".ele or .area; mesh the original .poly (or .node) with the finer switches instead"},
     {"D", " (conforming Delaunay) is not supported: pdd's meshes are constrained Delaunay"},
     {"u", " (a user-defined triunsuitable test) is not supported"},
     {"wW", " (weighted Delaunay) is not supported"},
@@ -48,7 +46,7 @@ inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
   for (const refused_switches& r : refusal_reasons)
     if (r.letters.find(c) != std::string_view::npos) return sw + std::string(r.reason);
-  return sw + " is not a Triangle switch pdd supports (supported: p q a A c e v o2 Q V N E P B "
+  return sw + " is not a Triangle switch pdd supports (supported: p r q a A c e v o2 Q V N E P B "
               "I O z j n, and i F l s L X, which pdd ignores)";
 }
 
@@ -97,6 +95,7 @@ struct flag_switch {
 
 inline constexpr flag_switch flag_switches[] = {
     {'p', &switches::poly},
+    {'r', &switches::refine},
     {'c', &switches::convex},
     {'e', &switches::edges},
     {'v', &switches::voronoi},
@@ -146,6 +145,7 @@ inline std::string format_switches(const switches& s) {
     if (on) out += c;
   };
   flag(s.poly, 'p');
+  flag(s.refine, 'r');
   flag(s.convex, 'c');
   if (s.quality && s.min_angle_deg > 0.0) out += 'q' + plain_number(s.min_angle_deg);
   if (s.max_area > 0.0) out += 'a' + plain_number(s.max_area);
