@@ -336,6 +336,7 @@ py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::
 PYBIND11_MODULE(pdd, m) {
   using namespace pdd::python;
   m.doc() = "pdd: parallel guaranteed-quality 2D Delaunay meshing by the decoupling method";
+  m.attr("__version__") = PDD_PYTHON_VERSION; // project(VERSION), python/CMakeLists.txt
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);

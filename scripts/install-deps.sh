@@ -5,6 +5,7 @@
 # llvm-14 holds llvm-symbolizer, which the sanitizer runtimes call to name the frames of a report:
 # without it every frame of a report is <null> (neither clang nor libclang-rt-14-dev pulls it in).
 # libopenmpi-dev and openmpi-bin (mpiexec) build and test the MPI backend (pdd-mesh-mpi).
+# help2man writes the programs' man pages from their --help (cmake/PddManPages.cmake).
 # .ci/run checks before each stage that its tools are here (its require function), and
 # scripts/fresh-machine-check.sh proves on a new Debian 12 root that this list is complete.
 #
@@ -16,7 +17,7 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtbb-dev libmetis-dev
           libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev python3-meshio
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
-          clang libclang-rt-14-dev llvm-14 libopenmpi-dev openmpi-bin)
+          clang libclang-rt-14-dev llvm-14 libopenmpi-dev openmpi-bin help2man)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

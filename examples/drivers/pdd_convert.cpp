@@ -14,6 +14,7 @@
 // (truncated, tampered, wrong version; the message names the file and the reason), 2 usage,
 // 4 internal error.
 #include "exit_code.hpp"
+#include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/io/binary_mesh.hpp>
@@ -92,6 +93,7 @@ int run(const cli_options& o) {
 int main(int argc, char** argv) {
   cli_options o;
   CLI::App app{"pdd-convert: pdd's binary per-subdomain mesh (.pddi/.pddm) to VTU (.pvtu/.vtu)"};
+  pdd::drivers::add_version_flag(app, "pdd-convert");
   app.add_option("input", o.input, "a .pddi index (pdd-mesh --format binary) or one .pddm piece")
       ->required();
   app.add_option("output", o.output, "for an index: the output folder; for a piece: the .vtu file")

@@ -31,6 +31,7 @@
 // be decomposed, 2 usage, 3 the decomposition failed its own check, 4 internal error.
 #include "exit_code.hpp"
 #include "graded_options.hpp"
+#include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/geometry/properties.hpp>
@@ -213,6 +214,7 @@ void check_usage(cli_options& o, bool subdomains_given) {
 int main(int argc, char** argv) {
   cli_options o;
   CLI::App app{"pdd-decompose: Medial Axis Domain Decomposition of a Triangle .poly domain"};
+  pdd::drivers::add_version_flag(app, "pdd-decompose");
   app.add_option("input", o.input, "input domain (Triangle .poly)")->required();
   o.madd.subdomains = 0;
   auto* subdomains =

@@ -5,6 +5,7 @@
 // The key (54 segments, one hole) and the pipe cross-section (a circle of 576 segments with 9
 // circular holes) are the dissertation's model domains; examples/data holds their output.
 #include "exit_code.hpp"
+#include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/geometry/model_domains.hpp>
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   std::string name, output, svg;
   std::size_t outer = 576, hole = 64;
   CLI::App app{"pdd-geometry: write a generated model domain as a Triangle .poly file"};
+  pdd::drivers::add_version_flag(app, "pdd-geometry");
   app.add_option("domain", name, "key or pipe")->required()->check(CLI::IsMember({"key", "pipe"}));
   app.add_option("-o,--output", output, "output .poly file")->required();
   app.add_option("--svg", svg, "also draw the domain to this SVG file");

@@ -16,6 +16,7 @@
 // written then).
 #include "exit_code.hpp"
 #include "mesh_options.hpp"
+#include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
@@ -456,6 +457,7 @@ int run(const cli_options& o) {
 int main(int argc, char** argv) {
   cli_options o;
   CLI::App app{"pdd-mesh: guaranteed-quality 2D Delaunay meshing of a Triangle .poly domain"};
+  pdd::drivers::add_version_flag(app, "pdd-mesh");
   auto* per = add_mesh_options(app, o, "threads (default: all cores)");
   app.add_option("-o,--output", o.output, "output mesh: .vtu, .node (+.ele/.poly), .msh, .svg");
   auto* ver =

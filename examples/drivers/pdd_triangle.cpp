@@ -9,6 +9,8 @@
 // name) the input is a vertex set, NAME.node. Every other switch (-r among them: pdd cannot
 // refine a previous mesh) is refused by name.
 // Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 4 internal error.
+#include "version_flag.hpp"
+
 #include <pdd/errors.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/io/previous_mesh.hpp>
@@ -271,6 +273,8 @@ int main(int argc, char** argv) {
              "vertex set, triangulated), q[angle], a[area], a (regional areas), A, c (convex "
              "hull), e (.edge), v (Voronoi: .v.node, .v.edge), Q, V, N, E, P, B, I, O, z, j, n. "
              "Refused, with the reason: r D u w W o Y S g i F l s L C X.");
+  // --version (CLI11) exits before Triangle's switches are read (run_reporting_errors)
+  pdd::drivers::add_version_flag(app, "pdd-triangle");
   try {
     std::vector<const char*> args;
     for (const std::string& a : rest)

@@ -10,6 +10,7 @@
 // tampered, foreign, another binary version), 2 usage, 3 the mesh failed verification, 4 internal
 // error.
 #include "exit_code.hpp"
+#include "version_flag.hpp"
 
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/poly.hpp>
@@ -103,6 +104,7 @@ int main(int argc, char** argv) {
   cli_options o;
   CLI::App app{"pdd-verify: verify a per-subdomain mesh (.pvtu over .vtu pieces, or .pddi over "
                "binary .pddm pieces) piece by piece"};
+  pdd::drivers::add_version_flag(app, "pdd-verify");
   app.add_option("index", o.index,
                  "the index, mesh.pvtu or mesh.pddi (pdd-mesh --output-per-subdomain DIR)")
       ->required();

@@ -16,6 +16,7 @@
 // check (rank 0, on the plan's estimate, before any file) refuses with exit code 1 on every rank.
 #include "../exit_code.hpp"
 #include "../mesh_options.hpp"
+#include "../version_flag.hpp"
 
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/atomic_file.hpp>
@@ -243,6 +244,7 @@ int run_with(const mesh_options& o, const mpi_job& job) {
 int parse_and_run(int argc, char** argv, const mpi_job& job) {
   mesh_options o;
   CLI::App app{"pdd-mesh-mpi: pdd-mesh --output-per-subdomain over the ranks of an MPI job"};
+  pdd::drivers::add_version_flag(app, "pdd-mesh-mpi");
   add_mesh_options(app, o, "meshing threads per rank (default: the node's cores / its ranks)")
       ->required();
   try {
