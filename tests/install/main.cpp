@@ -1,8 +1,9 @@
 // Consumer of an installed pdd: reads a .poly, meshes it with the default kernel, verifies;
 // then meshes it again graded by a muParser expression (pdd::expression target) and verifies
-// the mesh against that field.
+// the mesh against that field. It prints the installed pdd/version.hpp's version.
 #include <pdd/pdd.hpp>
 #include <pdd/sizing/expression.hpp>
+#include <pdd/version.hpp>
 
 #include <cstdio>
 
@@ -11,6 +12,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "usage: %s INPUT.poly\n", argv[0]);
     return 2;
   }
+  std::printf("pdd_consumer: pdd %s (installed pdd/version.hpp)\n", PDD_VERSION_STRING);
   const pdd::pslg domain = pdd::read_poly(argv[1]);
   pdd::generate_options options;
   options.criteria.max_area = 1e-3;
