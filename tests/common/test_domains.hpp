@@ -20,6 +20,17 @@ inline pslg unit_square(int marker = 1) {
   return d;
 }
 
+/// The unit square with a notch 1e-4 wide and deep in its bottom side (a feature far smaller
+/// than the mesh: the geometric path's test domain; angles 90 and 270 deg: no shields).
+inline pslg notched_square() {
+  pslg g;
+  g.add_loop(
+      std::vector<point>{
+          {0, 0}, {0.5, 0}, {0.5, 1e-4}, {0.5001, 1e-4}, {0.5001, 0}, {1, 0}, {1, 1}, {0, 1}},
+      0);
+  return g;
+}
+
 /// [0,3]^2 with the hole [1,2]^2 (clockwise, marker 2) and its hole point.
 inline pslg square_with_hole() {
   pslg d;

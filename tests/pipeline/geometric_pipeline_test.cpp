@@ -10,6 +10,7 @@
 
 #include "mesh_compare.hpp"
 #include "pipeline_run.hpp"
+#include "test_domains.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,16 +23,7 @@ namespace {
 
 using pdd::point;
 
-/// The unit square with a notch 1e-4 wide and deep in its bottom side (angles 90 and 270 deg:
-/// no shields).
-pdd::pslg notched_square() {
-  pdd::pslg g;
-  g.add_loop(
-      std::vector<point>{
-          {0, 0}, {0.5, 0}, {0.5, 1e-4}, {0.5001, 1e-4}, {0.5001, 0}, {1, 0}, {1, 1}, {0, 1}},
-      0);
-  return g;
-}
+using pdd::test::notched_square;
 
 pdd::generate_options automatic_options(unsigned threads) {
   pdd::generate_options o;

@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include "test_domains.hpp"
+
 #include <cmath>
 #include <optional>
 #include <string>
@@ -19,20 +21,16 @@ namespace {
 
 using pdd::point;
 
-pdd::pslg unit_square() {
-  pdd::pslg g;
-  g.add_loop(std::vector<point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 0);
-  return g;
-}
+using pdd::test::notched_square;
+using pdd::test::unit_square;
 
-/// The unit square with a notch 1e-4 wide and deep (a feature far smaller than the mesh).
-pdd::pslg notched_square() {
-  pdd::pslg g;
-  g.add_loop(
-      std::vector<point>{
-          {0, 0}, {0.5, 0}, {0.5, 1e-4}, {0.5001, 1e-4}, {0.5001, 0}, {1, 0}, {1, 1}, {0, 1}},
-      0);
-  return g;
+/// A plan of N = 8 on `path` under automatic N, as plan_run would make it.
+pdd::run_plan automatic_plan(pdd::mesh_path path) {
+  pdd::run_plan p;
+  p.path = path;
+  p.subdomains = 8;
+  p.automatic = true;
+  return p;
 }
 
 pdd::generate_options bounded(double max_area, std::size_t n = 0) {
@@ -94,10 +92,7 @@ TEST(PlanRun, AutomaticNAndTheGeneralDomain) {
 }
 
 TEST(PlanAfterPath, NothingWhenDecouplingPays) {
-  pdd::run_plan p;
-  p.path = pdd::mesh_path::graded;
-  p.subdomains = 8;
-  p.automatic = true;
+  pdd::run_plan p = automatic_plan(pdd::mesh_path::graded);
   const pdd::planning_options o; // 5 % of the estimate
   EXPECT_FALSE(pdd::plan_after_path(p, 50, 1000.0, 0, 8, "", o));
   p.automatic = false; // a requested N is kept whatever the split points
@@ -105,10 +100,7 @@ TEST(PlanAfterPath, NothingWhenDecouplingPays) {
 }
 
 TEST(PlanAfterPath, TheWholeDomainWhenItDoesNot) {
-  pdd::run_plan p;
-  p.path = pdd::mesh_path::graded;
-  p.subdomains = 8;
-  p.automatic = true;
+  pdd::run_plan p = automatic_plan(pdd::mesh_path::graded);
   p.reason = "planned";
   const std::optional<pdd::run_plan> next =
       pdd::plan_after_path(p, 51, 1000.0, 0, 8, "so far", pdd::planning_options{});
@@ -121,10 +113,7 @@ TEST(PlanAfterPath, TheWholeDomainWhenItDoesNot) {
 }
 
 TEST(PlanAfterPath, TheGeometricLoopOnceMoreWithHalfItsCap) {
-  pdd::run_plan p;
-  p.path = pdd::mesh_path::geometric;
-  p.subdomains = 8;
-  p.automatic = true;
+  pdd::run_plan p = automatic_plan(pdd::mesh_path::geometric);
   p.first_reason = "first";
   const pdd::planning_options o;
   std::optional<pdd::run_plan> retry = pdd::plan_after_path(p, 100, 1000.0, 256, 256, "now", o);
