@@ -298,6 +298,27 @@ TEST(Triangulate, RefineWithPerTriangleAreasAndAttributes) {
   EXPECT_THROW(tri::refine(prev, tri::parse_switches("rq")), pdd::geometry_error);
 }
 
+TEST(Triangulate, VertexAttributesInterpolatedAndBadInputRefusedByPdd) {
+  const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
+  pdd::previous_mesh prev = previous_of(tri::triangulate(key, tri::parse_switches("pq")));
+  prev.input.vertex_attribute_count = 1;
+  for (const pdd::point& p : prev.input.vertices)
+    prev.input.vertex_attributes.push_back(3.0 - p.x + 0.5 * p.y); // linear: reproduced
+  const auto r = tri::refine(prev, tri::parse_switches("rqa0.01o2"));
+  ASSERT_EQ(r.vertex_attributes.size(), r.mesh.vertices.size());
+  for (std::size_t v = 0; v < r.mesh.vertices.size(); ++v)
+    EXPECT_NEAR(r.vertex_attributes[v], 3.0 - r.mesh.vertices[v].x + 0.5 * r.mesh.vertices[v].y,
+                1e-9)
+        << v;
+  // crossing segments with attributes: pdd's geometry_error, as without them
+  pdd::pslg crossing = square_loop({}, 0, 0, 1, 1);
+  crossing.add_segment(0, 2);
+  crossing.add_segment(1, 3);
+  crossing.vertex_attribute_count = 1;
+  crossing.vertex_attributes = {1, 2, 3, 4};
+  EXPECT_THROW(tri::triangulate(crossing, tri::parse_switches("pq")), pdd::geometry_error);
+}
+
 TEST(Triangulate, JettisonKeepsEveryUsedVertex) {
   const pdd::pslg key = pdd::read_poly(pdd::test::bundled_data("key.poly"));
   const auto a = tri::triangulate(key, tri::parse_switches("pqa0.01"));

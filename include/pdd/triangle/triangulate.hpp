@@ -6,6 +6,7 @@
 
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/geometry/validate.hpp>
 #include <pdd/io/previous_mesh.hpp>
 #include <pdd/mesh/region_attributes.hpp>
 #include <pdd/triangle/detail/edge_tables.hpp>
@@ -91,10 +92,13 @@ inline void finish_tables(triangulation& out, const switches& sw,
 /// for the tables. Thread-safety: reentrant.
 inline triangulation triangulate(pslg domain, const switches& sw,
                                  const triangulate_options& o = {}) {
-  std::optional<detail::vertex_attribute_interpolator> attributes;
-  if (domain.vertex_attribute_count > 0) attributes.emplace(domain, sw.poly);
+  // the attributes' source is triangulated once the domain is validated (by the meshing)
+  pslg source;
+  if (domain.vertex_attribute_count > 0) source = domain;
   triangulation out = sw.poly ? detail::triangulate_pslg(std::move(domain), sw, o)
                               : detail::triangulate_point_set(domain, sw, o);
+  std::optional<detail::vertex_attribute_interpolator> attributes;
+  if (source.vertex_attribute_count > 0) attributes.emplace(source, sw.poly);
   detail::finish_tables(out, sw, attributes ? &*attributes : nullptr);
   return out;
 }
@@ -111,16 +115,19 @@ inline triangulation triangulate(pslg domain, const switches& sw,
 ///   that is not a valid triangulation (pdd::validate); everything pdd::generate throws.
 inline triangulation refine(const previous_mesh& m, const switches& sw,
                             const triangulate_options& o = {}) {
+  triangulation out = detail::refine_previous(m, sw, o); // checks and validates m first
   std::optional<detail::vertex_attribute_interpolator> attributes;
   if (m.input.vertex_attribute_count > 0) {
-    detail::check_previous(m);
     pslg edges = m.input; // the previous triangulation is the edges' constrained one
     edges.segments.clear();
+    edges.holes.clear();
+    edges.regions.clear();
+    edges.rule = domain_rule::triangle;
     for (const auto& [key, count] : detail::edge_uses(m.triangles))
       edges.add_segment(static_cast<index_t>(key >> 32), static_cast<index_t>(key));
+    validate(edges); // overlapping previous triangles: their edges cross
     attributes.emplace(edges, true);
   }
-  triangulation out = detail::refine_previous(m, sw, o);
   detail::finish_tables(out, sw, attributes ? &*attributes : nullptr);
   return out;
 }
