@@ -118,13 +118,7 @@ inline triangulation refine(const previous_mesh& m, const switches& sw,
   triangulation out = detail::refine_previous(m, sw, o); // checks and validates m first
   std::optional<detail::vertex_attribute_interpolator> attributes;
   if (m.input.vertex_attribute_count > 0) {
-    pslg edges = m.input; // the previous triangulation is the edges' constrained one
-    edges.segments.clear();
-    edges.holes.clear();
-    edges.regions.clear();
-    edges.rule = domain_rule::triangle;
-    for (const auto& [key, count] : detail::edge_uses(m.triangles))
-      edges.add_segment(static_cast<index_t>(key >> 32), static_cast<index_t>(key));
+    const pslg edges = detail::previous_triangulation(m); // its constrained triangulation
     validate(edges); // overlapping previous triangles: their edges cross
     attributes.emplace(edges, true);
   }

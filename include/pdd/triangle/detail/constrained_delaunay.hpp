@@ -8,6 +8,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/mesh/region_attributes.hpp>
+#include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/switches.hpp>
 #include <pdd/triangle/triangulation.hpp>
 
@@ -22,17 +23,14 @@ namespace pdd::triangle::detail {
 /// The input segments that are edges of the triangles `m` holds (a segment in a hole or
 /// outside the domain is none), with their markers, in input order.
 inline std::vector<mesh_edge> segments_in_mesh(const pslg& g, const triangle_mesh& m) {
-  const auto key = [](index_t a, index_t b) {
-    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-  };
   std::unordered_set<std::uint64_t> edges;
   edges.reserve(3 * m.triangles.size());
   for (const auto& t : m.triangles)
     for (int i = 0; i < 3; ++i)
-      edges.insert(key(t[i], t[(i + 1) % 3]));
+      edges.insert(edge_key(t[i], t[(i + 1) % 3]));
   std::vector<mesh_edge> out;
   for (const segment& s : g.segments)
-    if (edges.contains(key(s.a, s.b))) out.push_back({s.a, s.b, s.marker});
+    if (edges.contains(edge_key(s.a, s.b))) out.push_back({s.a, s.b, s.marker});
   return out;
 }
 

@@ -5,6 +5,7 @@
 
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/triangulation.hpp>
 
 #include <algorithm>
@@ -21,13 +22,10 @@ namespace pdd::triangle::detail {
 inline std::vector<mesh_edge> list_edges(const triangle_mesh& m,
                                          const std::vector<std::array<long long, 3>>& nb,
                                          voronoi_diagram* voronoi) {
-  const auto key = [](index_t a, index_t b) {
-    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-  };
   std::unordered_map<std::uint64_t, int> segment_marker;
   segment_marker.reserve(m.segments.size());
   for (const mesh_edge& s : m.segments)
-    segment_marker.emplace(key(s.a, s.b), s.marker);
+    segment_marker.emplace(edge_key(s.a, s.b), s.marker);
   std::vector<mesh_edge> edges;
   edges.reserve(m.triangles.size() * 3 / 2 + 2);
   for (std::size_t t = 0; t < m.triangles.size(); ++t)
@@ -35,7 +33,7 @@ inline std::vector<mesh_edge> list_edges(const triangle_mesh& m,
       const long long across = nb[t][i];
       if (across >= 0 && static_cast<std::size_t>(across) < t) continue;
       const index_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
-      const auto s = segment_marker.find(key(a, b));
+      const auto s = segment_marker.find(edge_key(a, b));
       const int marker = s != segment_marker.end() && s->second != 0 ? s->second : across < 0;
       edges.push_back({a, b, marker});
       if (!voronoi) continue;

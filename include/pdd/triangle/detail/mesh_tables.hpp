@@ -8,6 +8,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstddef>
@@ -18,6 +19,11 @@
 #include <vector>
 
 namespace pdd::triangle::detail {
+
+/// One key per undirected edge {a, b} (the smaller id in the high half).
+inline std::uint64_t edge_key(index_t a, index_t b) {
+  return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
+}
 
 /// Applies a vertex renumbering (new_id[old] for every old vertex, no_index: dropped) to the
 /// mesh; `count` is the number of new ids.

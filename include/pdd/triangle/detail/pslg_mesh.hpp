@@ -31,17 +31,14 @@ namespace pdd::triangle::detail {
 /// \throws pdd::geometry_error when the vertices are fewer than three or all collinear.
 inline void close_convex_hull(pslg& g) {
   const point_set_delaunay d = delaunay_of(g.vertices, find_distinct(g.vertices).kept);
-  const auto key = [](index_t a, index_t b) {
-    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-  };
   std::unordered_map<std::uint64_t, std::size_t> segment_of;
   for (std::size_t s = 0; s < g.segments.size(); ++s)
-    segment_of.emplace(key(g.segments[s].a, g.segments[s].b), s);
+    segment_of.emplace(edge_key(g.segments[s].a, g.segments[s].b), s);
   if (g.vertex_markers.size() != g.vertices.size()) g.vertex_markers.resize(g.vertices.size(), 0);
   for (std::size_t k = 0; k < d.hull.size(); ++k) {
     const index_t a = d.hull[k], b = d.hull[(k + 1) % d.hull.size()];
     if (g.vertex_markers[a] == 0) g.vertex_markers[a] = 1;
-    const auto it = segment_of.find(key(a, b));
+    const auto it = segment_of.find(edge_key(a, b));
     if (it == segment_of.end())
       g.add_segment(a, b, 1);
     else if (g.segments[it->second].marker == 0)

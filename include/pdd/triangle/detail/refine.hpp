@@ -37,8 +37,7 @@ edge_uses(const std::vector<std::array<index_t, 3>>& triangles) {
   std::unordered_map<std::uint64_t, int> uses;
   for (const auto& t : triangles)
     for (int i = 0; i < 3; ++i) {
-      const index_t a = t[i], b = t[(i + 1) % 3];
-      ++uses[(std::uint64_t{std::min(a, b)} << 32) | std::max(a, b)];
+      ++uses[edge_key(t[i], t[(i + 1) % 3])];
     }
   return uses;
 }
@@ -73,7 +72,7 @@ inline pslg previous_domain(const previous_mesh& m) {
   g.regions.clear();
   std::unordered_map<std::uint64_t, int> uses = edge_uses(m.triangles);
   for (const segment& s : g.segments)
-    uses.erase((std::uint64_t{std::min(s.a, s.b)} << 32) | std::max(s.a, s.b));
+    uses.erase(edge_key(s.a, s.b));
   for (const auto& [key, count] : uses)
     if (count == 1) g.add_segment(static_cast<index_t>(key >> 32), static_cast<index_t>(key), 1);
   std::sort(g.segments.begin() + static_cast<std::ptrdiff_t>(m.input.segments.size()),
@@ -94,14 +93,23 @@ inline pslg previous_domain(const previous_mesh& m) {
   return g;
 }
 
-/// The attribute of the previous triangle that holds each triangle of `mesh` (its centroid
-/// located in the previous triangulation; 0 outside it).
-inline std::vector<double> carried_attributes(const previous_mesh& m, const triangle_mesh& mesh) {
-  pslg all;
-  all.vertices = m.input.vertices;
+/// The previous triangulation as a PSLG by Triangle's rule: its vertices (with their markers and
+/// attributes) and every edge of its triangles a segment, so that each triangle is a face.
+inline pslg previous_triangulation(const previous_mesh& m) {
+  pslg all = m.input;
+  all.segments.clear();
+  all.holes.clear();
+  all.regions.clear();
   all.rule = domain_rule::triangle;
   for (const auto& [key, count] : edge_uses(m.triangles))
     all.add_segment(static_cast<index_t>(key >> 32), static_cast<index_t>(key));
+  return all;
+}
+
+/// The attribute of the previous triangle that holds each triangle of `mesh` (its centroid
+/// located in the previous triangulation; 0 outside it).
+inline std::vector<double> carried_attributes(const previous_mesh& m, const triangle_mesh& mesh) {
+  const pslg all = previous_triangulation(m);
   const domain_faces faces(all); // every previous triangle is a face
   std::vector<double> of_face(faces.face_count(), 0.0);
   for (std::size_t t = 0; t < m.triangles.size(); ++t) {

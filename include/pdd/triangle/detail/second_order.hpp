@@ -4,6 +4,7 @@
 #pragma once
 
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/triangle/detail/mesh_tables.hpp>
 
 #include <algorithm>
 #include <array>
@@ -26,12 +27,9 @@ namespace pdd::triangle::detail {
 inline std::vector<std::array<index_t, 3>>
 add_second_order_nodes(triangle_mesh& m, const std::vector<std::array<long long, 3>>& nb,
                        std::vector<double>* per_vertex = nullptr, std::size_t width = 0) {
-  const auto key = [](index_t a, index_t b) {
-    return (std::uint64_t{std::min(a, b)} << 32) | std::max(a, b);
-  };
   std::unordered_map<std::uint64_t, int> segment_marker;
   for (const mesh_edge& e : m.segments)
-    segment_marker.emplace(key(e.a, e.b), e.marker);
+    segment_marker.emplace(edge_key(e.a, e.b), e.marker);
   m.vertex_markers.resize(m.vertices.size(), 0);
   std::unordered_map<std::uint64_t, index_t> node_of_edge;
   node_of_edge.reserve(3 * m.triangles.size() / 2 + 1);
@@ -40,12 +38,12 @@ add_second_order_nodes(triangle_mesh& m, const std::vector<std::array<long long,
     for (int i = 0; i < 3; ++i) {
       const index_t a = m.triangles[t][(i + 1) % 3], b = m.triangles[t][(i + 2) % 3];
       const auto [it, added] =
-          node_of_edge.try_emplace(key(a, b), static_cast<index_t>(m.vertices.size()));
+          node_of_edge.try_emplace(edge_key(a, b), static_cast<index_t>(m.vertices.size()));
       nodes[t][i] = it->second;
       if (!added) continue;
       const point p = m.vertices[a], q = m.vertices[b];
       m.vertices.push_back({0.5 * (p.x + q.x), 0.5 * (p.y + q.y)});
-      const auto s = segment_marker.find(key(a, b));
+      const auto s = segment_marker.find(edge_key(a, b));
       m.vertex_markers.push_back(s != segment_marker.end() ? s->second : nb[t][i] < 0 ? 1 : 0);
       if (per_vertex)
         for (std::size_t k = 0; k < width; ++k)
