@@ -3,9 +3,12 @@
 # interfaces at below 60 deg, so each crossing is a corner below 60 deg on segments between two
 # faces. Refused for N > 1 and meshed whole before caps; since caps (madd/detail/corner_caps.hpp)
 # each crossing is a cap, one subdomain, and the rest is decoupled. Runs pdd-mesh automatic
-# (2 threads), pdd-mesh with one subdomain (what such a domain got before) and, when given,
-# Triangle 1.6 on the same .poly, alternately, twice.
+# (2 threads and 1), pdd-mesh with one subdomain (what such a domain got before) and, when given,
+# Triangle 1.6 on the same .poly, alternately, twice: the same work on both sides, one thread
+# pinned against one (benchmarks/side_by_side.sh).
 # Usage: benchmarks/run_faulted.sh BUILD_DIR [MAX_AREA] [TRIANGLE_EXE]
+# KERNELS (default "cgal native"): the kernels of the automatic pdd-mesh runs (--kernel); the
+# run with one subdomain uses the default kernel, CGAL's.
 set -euo pipefail
 build=${1:?build dir}
 area=${2:-2e-4}
@@ -69,30 +72,27 @@ with open(sys.argv[1], "w") as f:
     f.writelines(f"{i} {a} {b}\n" for i, (a, b) in enumerate(segs))
     f.write("0\n")
 PY
-pdd() { # label, extra options
-  /usr/bin/time -f "%e %M" -o "$dir/time" "$build/examples/drivers/pdd-mesh" "$dir/faulted.poly" \
-    --max-area "$area" --threads 2 "${@:2}" -o "$dir/out.node" --stats "$dir/stats.json" -q
-  python3 - "$1" "$dir" <<'PY'
-import json, sys
-label, d = sys.argv[1], sys.argv[2]
-s = json.load(open(f"{d}/stats.json"))
-wall, rss = open(f"{d}/time").read().split()
-print(f"| {label} | {s['triangles']} | {s['subdomains']} | {s['path']} | {wall} | "
-      f"{int(rss) // 1024} |")
-PY
-}
+# Raw data: benchmarks/results/faulted.jsonl (first line: the provenance); the table is printed
+# from it (benchmarks/side_by_side.sh: the same work on both sides, one thread pinned against one)
+source "$(dirname "$0")/side_by_side.sh"
+out=benchmarks/results/faulted.jsonl
+side_by_side_begin "$out" "bash benchmarks/run_faulted.sh $*"
+exe="$build/examples/drivers/pdd-mesh"
 echo "plan: $("$build/examples/drivers/pdd-mesh" "$dir/faulted.poly" --max-area "$area" \
-  --threads 2 --stats "$dir/plan.json" -o "$dir/plan.node" -q >/dev/null &&
+  --threads 2 --stats "$dir/plan.json" -q >/dev/null &&
   python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['plan_reason'])" "$dir/plan.json")"
-echo "| run | triangles | subdomains | path | wall s | max RSS MiB |"
-echo "|---|---|---|---|---|---|"
-for _ in 1 2; do
-  pdd "pdd-mesh, automatic"
-  pdd "pdd-mesh --subdomains 1" --subdomains 1
+a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
+for rep in 1 2; do
+  for kernel in ${KERNELS:-cgal native}; do # pdd-mesh's kernels (--kernel)
+    for t in 2 1; do
+      pdd_timed "$out" "$exe" "$dir/faulted.poly" "pdd-mesh --kernel $kernel, automatic" "$rep" "$t" \
+        --max-area "$area" --kernel "$kernel"
+    done
+  done
+  pdd_timed "$out" "$exe" "$dir/faulted.poly" "pdd-mesh --subdomains 1" "$rep" 1 --max-area "$area" \
+    --subdomains 1
   if [ -n "$triangle" ]; then # (Triangle's switches take no exponent)
-    a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
-    /usr/bin/time -f "%e %M" -o "$dir/time" "$triangle" -pq20.7a"$a"Q "$dir/faulted.poly"
-    read -r wall rss <"$dir/time"
-    echo "| Triangle 1.6 -pq20.7a$a | $(head -1 "$dir/faulted.1.ele" | awk '{print $1}') | 1 | - | $wall | $((rss / 1024)) |"
+    triangle_timed "$out" "$triangle" "$dir/faulted.poly" "$rep" "pq20.7a$a"
   fi
 done
+side_by_side_table "$out"

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # A lake whose islands touch the shore and each other at single vertices (pinch vertices, issue
 # 13): decoupled from its one face since 08cdcd5, meshed whole before. Runs pdd-mesh automatic
-# (2 threads), pdd-mesh with one subdomain (what such a domain got before: the kernel on the
-# whole domain) and, when given, Triangle 1.6 on the same .poly, alternately, twice. With
+# (2 threads and 1), pdd-mesh with one subdomain (what such a domain got before: the kernel on
+# the whole domain) and, when given, Triangle 1.6 on the same .poly, alternately, twice: the
+# same work on both sides, one thread pinned against one (benchmarks/side_by_side.sh). With
 # CRACKS = 1, every sector of the water below 60 deg between two islands touching in open water
 # gets a crack: a segment from the pinch vertex along its bisector (decoupled since 033069a,
 # with that corner left to the kernel's clusters; refused for N > 1 and meshed whole before).
 # Usage: benchmarks/run_pinched.sh BUILD_DIR [MAX_AREA] [TRIANGLE_EXE] [CRACKS]
+# KERNELS (default "cgal native"): the kernels of the automatic pdd-mesh runs (--kernel); the
+# run with one subdomain uses the default kernel, CGAL's.
 set -euo pipefail
 build=${1:?build dir}
 area=${2:-6e-5}
@@ -89,27 +92,25 @@ with open(sys.argv[1], "w") as f:
     f.write(f"{len(holes)}\n")
     f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(holes))
 PY
-pdd() { # label, extra options
-  /usr/bin/time -f "%e %M" -o "$dir/time" "$build/examples/drivers/pdd-mesh" "$dir/lake.poly" \
-    --max-area "$area" --threads 2 "${@:2}" -o "$dir/out.node" --stats "$dir/stats.json" -q
-  python3 - "$1" "$dir" <<'PY'
-import json, sys
-label, d = sys.argv[1], sys.argv[2]
-s = json.load(open(f"{d}/stats.json"))
-wall, rss = open(f"{d}/time").read().split()
-print(f"| {label} | {s['triangles']} | {s['subdomains']} | {s['path']} | "
-      f"{s['shielded_triangles']} | {wall} | {int(rss) // 1024} |")
-PY
-}
-echo "| run | triangles | subdomains | path | shielded | wall s | max RSS MiB |"
-echo "|---|---|---|---|---|---|---|"
-for _ in 1 2; do
-  pdd "pdd-mesh, automatic"
-  pdd "pdd-mesh --subdomains 1" --subdomains 1
-  if [ -n "$triangle" ]; then # (Triangle's switches take no exponent: 6e-5 as 0.00006)
-    a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
-    /usr/bin/time -f "%e %M" -o "$dir/time" "$triangle" -pq20.7a"$a"Q "$dir/lake.poly"
-    read -r wall rss <"$dir/time"
-    echo "| Triangle 1.6 -pq20.7a$a | $(head -1 "$dir/lake.1.ele" | awk '{print $1}') | 1 | - | - | $wall | $((rss / 1024)) |"
+# Raw data: benchmarks/results/pinched[-cracks].jsonl (first line: the provenance); the table is
+# printed from it (benchmarks/side_by_side.sh: the same work on both sides, one pinned thread
+# against one)
+source "$(dirname "$0")/side_by_side.sh"
+out=benchmarks/results/pinched$([ "$cracks" = 1 ] && echo -cracks || true).jsonl
+side_by_side_begin "$out" "bash benchmarks/run_pinched.sh $*"
+exe="$build/examples/drivers/pdd-mesh"
+a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
+for rep in 1 2; do
+  for kernel in ${KERNELS:-cgal native}; do # pdd-mesh's kernels (--kernel)
+    for t in 2 1; do
+      pdd_timed "$out" "$exe" "$dir/lake.poly" "pdd-mesh --kernel $kernel, automatic" "$rep" "$t" \
+        --max-area "$area" --kernel "$kernel"
+    done
+  done
+  pdd_timed "$out" "$exe" "$dir/lake.poly" "pdd-mesh --subdomains 1" "$rep" 1 --max-area "$area" \
+    --subdomains 1
+  if [ -n "$triangle" ]; then # (Triangle's switches take no exponent)
+    triangle_timed "$out" "$triangle" "$dir/lake.poly" "$rep" "pq20.7a$a"
   fi
 done
+side_by_side_table "$out"

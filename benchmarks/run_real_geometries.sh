@@ -4,7 +4,10 @@
 # (--subdomains 1, 1 thread) vs automatic pdd-mesh (no --subdomains: the geometric path where a
 # feature is smaller than the mesh) at 1 and 2 threads, and Triangle 1.6 (-pq20.7a<A>QNEP: no
 # output file, as pdd-mesh writes none here) on the same input and bound. One process per run,
-# CPU seconds (user + sys) from /usr/bin/time.
+# CPU seconds (user + sys) from /usr/bin/time. One-thread runs (the monolithic kernel, automatic at
+# 1 thread, Triangle) are pinned to CPU 0 and two-thread runs to CPUs 0 and 1 (taskset), so one
+# thread is compared with one thread. The first line of the raw data is the run's provenance
+# (benchmarks/provenance.sh: command, commit, machine, date).
 #   nice -n 10 bash benchmarks/run_real_geometries.sh [BUILD_DIR] [TRIANGLES] [GEOMETRIES] [TRIANGLE_EXE]
 # Defaults: build/release, 2e6, "bahamas_islands lake_superior texas mesh2d_airfoil_3element"
 # from ../shared/data, /tmp/tri/triangle (build it with ../shared/anchors/triangle/build.sh
@@ -18,9 +21,11 @@ triangle=${4:-/tmp/tri/triangle}
 data=../shared/data
 exe="$build/examples/drivers/pdd-mesh"
 out="benchmarks/results/real-geometries-${target}.jsonl"
-: > "$out"
+source "$(dirname "$0")/provenance.sh"
+provenance_json "bash benchmarks/run_real_geometries.sh $*" > "$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
+cpus() { [ "$1" = 1 ] && echo 0 || echo "0-$(($1 - 1))"; } # the CPUs a run of $1 threads gets
 for g in $geometries; do
   poly="$data/$g.poly"
   [ -f "$poly" ] || { echo "skip $g: $poly is absent" >&2; continue; }
@@ -30,7 +35,7 @@ for g in $geometries; do
   area=$(/usr/bin/python3 -c "
 import json; print('%.12f' % (json.load(open('$tmp/a.json'))['area_domain'] / ($target * 0.656)))")
   run() { # label threads [extra options]
-    /usr/bin/time -f "%U %S %e %M" -o "$tmp/time" \
+    /usr/bin/time -f "%U %S %e %M" -o "$tmp/time" taskset -c "$(cpus "$2")" \
       "$exe" "$poly" --max-area "$area" --threads "$2" --stats "$tmp/s.json" -q "${@:3}"
     /usr/bin/python3 -c "
 import json; j = json.load(open('$tmp/s.json')); u, s, e, m = open('$tmp/time').read().split()[-4:]
@@ -47,7 +52,7 @@ print(json.dumps(j))" >> "$out"
     cp "$poly" "$tmp/in.poly"
     # the same work as pdd-mesh here, which writes no file: -Q and -NEP (no .node, .ele, .poly);
     # the count from a second, untimed run that prints Triangle's statistics
-    /usr/bin/time -f "%U %S %e %M" -o "$tmp/time" "$triangle" -pq20.7a"$area"QNEP "$tmp/in.poly"
+    /usr/bin/time -f "%U %S %e %M" -o "$tmp/time" taskset -c 0 "$triangle" -pq20.7a"$area"QNEP "$tmp/in.poly"
     "$triangle" -pq20.7a"$area"NEP "$tmp/in.poly" | sed -n 's/^ *Mesh triangles: *//p' >"$tmp/count"
     /usr/bin/python3 -c "
 import json; u, s, e, m = open('$tmp/time').read().split()[-4:]
@@ -59,17 +64,24 @@ print(json.dumps(dict(domain='$g', label='triangle', triangles=n, cpu_seconds=fl
 done
 /usr/bin/python3 - "$out" <<'PY'
 import json, sys
-rows = [json.loads(l) for l in open(sys.argv[1])]
-print("| domain | run | triangles | over-refinement | subdomains | path | rounds / est. over-ref. | CPU s | wall s | vs monolithic (CPU, wall) |")
-print("|---|---|---|---|---|---|---|---|---|---|")
+lines = [json.loads(l) for l in open(sys.argv[1])]
+p = lines[0].get("provenance", {})
+print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
+    p.get("date"), p.get("commit"), p.get("machine"), p.get("load_average_at_start"),
+    p.get("command")))
+rows = [r for r in lines if "provenance" not in r]
+print("| domain | run | triangles | over-refinement | subdomains | path | rounds / est. over-ref. | CPU s | wall s | vs monolithic (CPU, wall) | Triangle's wall / this wall |")
+print("|---|---|---|---|---|---|---|---|---|---|---|")
 for d in dict.fromkeys(r["domain"] for r in rows):
     mono = next(r for r in rows if r["domain"] == d and r["label"] == "monolithic")
+    tri = next((r for r in rows if r["domain"] == d and r["label"] == "triangle"), None)
     for r in (r for r in rows if r["domain"] == d):
         over = 100.0 * (r["triangles"] / mono["triangles"] - 1.0)
         est = r.get("estimated_over_refinement") or []
         rounds = "%d / %s" % (r.get("sizing_rounds", 0), ", ".join("%.3g %%" % (100 * x) for x in est)) if est else "-"
-        print("| %s | %s | %d | %+.2f %% | %s | %s | %s | %.2f | %.2f | %.2fx, %.2fx |" % (
+        versus = "%.2fx" % (tri["wall_seconds"] / r["wall_seconds"]) if tri else "-"
+        print("| %s | %s | %d | %+.2f %% | %s | %s | %s | %.2f | %.2f | %.2fx, %.2fx | %s |" % (
             d, r["label"], r["triangles"], over, r.get("subdomains", "-"), r.get("path", "-"), rounds,
             r["cpu_seconds"], r["wall_seconds"], mono["cpu_seconds"] / r["cpu_seconds"],
-            mono["wall_seconds"] / r["wall_seconds"]))
+            mono["wall_seconds"] / r["wall_seconds"], versus))
 PY

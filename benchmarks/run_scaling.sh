@@ -120,17 +120,25 @@ bahamas() {
 }
 
 # 4. Issue 14's targets side by side, REPS times (default 2): per domain Triangle, then pdd-mesh
-#    with the native kernel and the automatic plan on 1 and 2 threads: the pipe and the key at
-#    16M triangles, the Bahamas at 2e-5.
+#    with the automatic plan on 1 and 2 threads for each of VERSUS_KERNELS (default "native"):
+#    the pipe and the key at 16M triangles, the Bahamas at 2e-5. One thread is pinned against
+#    one thread (Triangle and pdd-mesh --threads 1 on CPU 0, --threads 2 on CPUs 0 and 1), and
+#    the first line of the results is the run's provenance (benchmarks/provenance.sh).
 versus_triangle() {
-  local rep d
+  local rep d kernel
+  source "$(dirname "$0")/provenance.sh"
+  provenance_json "SCALING_PARTS=versus REPS=${REPS:-2} VERSUS_KERNELS=\"${VERSUS_KERNELS:-native}\" bash benchmarks/run_scaling.sh $bin $tri $data $out $max_threads" >>"$results"
   for rep in $(seq "${REPS:-2}"); do
     for d in "pipe ${PIPE_AREA:-2.61e-7}" "key ${KEY_AREA:-4.86e-7}" "bahamas_islands 2e-5"; do
       set -- $d
-      timed "$1 triangle 1 rep$rep" "$tri" -pq20.7048a"$(decimal "$2")"QNEP "$data/$1.poly"
-      for t in 1 2; do
-        timed "$1 native auto $t rep$rep" "$bin/pdd-mesh" "$data/$1.poly" --max-area "$2" \
-          --threads "$t" --kernel native --quiet --stats "$out/$1-auto-t$t-rep$rep.json"
+      timed "$1 triangle 1 rep$rep" taskset -c 0 "$tri" -pq20.7048a"$(decimal "$2")"QNEP \
+        "$data/$1.poly"
+      for kernel in ${VERSUS_KERNELS:-native}; do
+        for t in 1 2; do
+          timed "$1 $kernel auto $t rep$rep" taskset -c "$([ "$t" = 1 ] && echo 0 || echo 0-1)" \
+            "$bin/pdd-mesh" "$data/$1.poly" --max-area "$2" --threads "$t" --kernel "$kernel" \
+            --quiet --stats "$out/$1-$kernel-auto-t$t-rep$rep.json"
+        done
       done
     done
   done

@@ -13,6 +13,11 @@ out = pathlib.Path(sys.argv[1])
 runs = {}
 for line in (out / "results.jsonl").read_text().splitlines():
     r = json.loads(line)
+    if "provenance" in r:  # benchmarks/provenance.sh: command, commit, machine, date
+        p = r["provenance"]
+        print(f"Measured {p['date']} at commit `{p['commit']}` on {p['machine']} (load average "
+              f"at start {p['load_average_at_start']}); command: `{p['command']}`\n")
+        continue
     runs[r["run"]] = r
 
 
@@ -66,13 +71,37 @@ def mpi_table(kind):
         p *= 2
 
 
+def versus_table():
+    """The part "versus": Triangle against pdd-mesh's automatic plan, repetition by repetition."""
+    print("\n### Against Triangle 1.6, one pinned thread against one\n")
+    print("| domain | rep | kernel | triangles (pdd) | Triangle wall s | pdd 1 thread wall s "
+          "| pdd 2 threads wall s | ratio, 1 thread | ratio, 2 threads | peak RSS MiB, Triangle / pdd |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for name, tri in runs.items():
+        domain, what, _, rep = (name.split() + ["", "", "", ""])[:4]
+        if what != "triangle" or not rep.startswith("rep"):
+            continue
+        for kernel in ("native", "cgal"):
+            one, two = runs.get(f"{domain} {kernel} auto 1 {rep}"), runs.get(f"{domain} {kernel} auto 2 {rep}")
+            if not one or not two:
+                continue
+            n = stats(f"{domain}-{kernel}-auto-t1-{rep}").get("triangles", 0)
+            print(f"| {domain} | {rep[3:]} | {kernel} | {n:,} | {tri['wall_s']:.2f} | {one['wall_s']:.2f} "
+                  f"| {two['wall_s']:.2f} | {tri['wall_s'] / one['wall_s']:.2f} "
+                  f"| {tri['wall_s'] / two['wall_s']:.2f} "
+                  f"| {tri['peak_rss_mib']:.0f} / {two['peak_rss_mib']:.0f} |")
+
+
+if any(name.endswith("rep1") for name in runs):
+    versus_table()
 for d in ("pipe", "key"):
     if f"{d} triangle 1" in runs:
         kernels_table(d)
 for kind in ("fixed", "scaled"):
     if "pipe mpi fixed 1" in runs:
         mpi_table(kind)
-other = [r for name, r in runs.items() if name.startswith("bahamas") or name.endswith("000000")]
+other = [r for name, r in runs.items()
+         if (name.startswith("bahamas ") or name.endswith("000000")) and "rep" not in name]
 if other:
     print("\n### Monolithic runs\n")
     print("| run | triangles | wall s | CPU s | peak RSS MiB |")
