@@ -2,6 +2,7 @@
 // CGAL's exact in-circle predicate) and -S (at most N Steiner points) through
 // pdd::triangle::triangulate.
 #include <pdd/core/kernel.hpp>
+#include <pdd/errors.hpp>
 #include <pdd/io/poly.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/triangle/triangulate.hpp>
@@ -165,6 +166,24 @@ TEST(Conforming, SteinerBudgetCapsTheCount) {
   EXPECT_GE(pdd::compute_statistics(ample.mesh).min_angle_deg, 30.0 - 1e-9);
   const auto d = tri::triangulate(notch(), tri::parse_switches("pDS1"));
   EXPECT_EQ(d.mesh.vertices.size(), notch().vertices.size() + 1) << "D stops at the budget too";
+}
+
+/// A needle (the regressions' needle-01.poly: an angle of about 1e-8 degrees): a refinement that
+/// must keep every segment Delaunay splits its sides without end (Triangle's -pqD runs on and
+/// on), so -pqD stops at the runaway cap with pdd::limit_error instead of running until memory
+/// runs out, while a budget below the cap (S) still ends with exactly that many points.
+TEST(Conforming, ARefinementThatDoesNotEndStopsWithALimitError) {
+  pdd::pslg g;
+  g.add_loop(std::array<pdd::point, 3>{{{0, 1}, {1, 0}, {0.5, 4444444422.0}}}, 1);
+  try {
+    (void)tri::triangulate(g, tri::parse_switches("pqD"));
+    ADD_FAILURE() << "-pqD on the needle ended";
+  } catch (const pdd::limit_error& e) {
+    EXPECT_NE(std::string(e.what()).find("did not end"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("S"), std::string::npos) << e.what();
+  }
+  const auto capped = tri::triangulate(g, tri::parse_switches("pqDS50"));
+  EXPECT_EQ(capped.mesh.vertices.size(), 3u + 50u);
 }
 
 } // namespace conforming_test

@@ -32,8 +32,10 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -118,31 +120,56 @@ inline void release_outside_segments(cdt& tr, const std::vector<point>& holes) {
   if (!outside.empty()) mark_domain(tr, holes);
 }
 
+/// The most points a refinement for D or S may add before it is taken for one that does not end:
+/// small input angles can keep a refinement that must leave every segment Delaunay (Gabriel)
+/// splitting segments without end (Triangle's -D loops on such inputs too). A million, plus 64
+/// per input vertex, plus 4 times the triangles the area bound alone asks for (the domain's area
+/// over 0.656 max_area): far above what a mesh that ends needs.
+inline long long runaway_cap(const cdt& tr, double max_area) {
+  double area = 0.0;
+  for (auto f = tr.finite_faces_begin(); f != tr.finite_faces_end(); ++f)
+    if (f->is_in_domain())
+      area += CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+  const double by_area = std::isfinite(max_area) ? 4.0 * area / (0.656 * max_area) : 0.0;
+  const double cap = 1e6 + 64.0 * static_cast<double>(tr.number_of_vertices()) + by_area;
+  return cap < 9e18 ? static_cast<long long>(cap) : std::numeric_limits<long long>::max();
+}
+
+/// Runs `step` (one point per call, false when done) at most `budget` times (negative: until
+/// done), stopping with pdd::limit_error at `cap` points when the budget does not stop it first.
+template <class Step>
+void run_steps(Step step, long long budget, long long cap, const char* what) {
+  const long long limit = budget < 0 ? cap : std::min(budget, cap);
+  long long added = 0;
+  while (added < limit && step())
+    ++added;
+  if (added == cap && (budget < 0 || budget > cap) && step())
+    throw limit_error("the refinement for " + std::string(what) + " did not end: it added " +
+                      std::to_string(cap) +
+                      " points, far more than the mesh needs (see runaway_cap). Small input "
+                      "angles keep a refinement that must leave every segment Delaunay "
+                      "splitting segments without end; mesh without D, or cap the points with S");
+}
+
 /// Switch D without q or a: the segments split (CGAL::Triangulation_conformer_2) until every
-/// constrained edge is locally Delaunay, at most `budget` points (negative: no limit).
+/// constrained edge is locally Delaunay, at most `budget` points (negative: no limit) and never
+/// past runaway_cap.
 inline void make_conforming(cdt& tr, long long budget) {
+  const long long cap = runaway_cap(tr, std::numeric_limits<double>::infinity());
   CGAL::Triangulation_conformer_2<cdt> conform(tr);
-  if (budget < 0) {
-    conform.make_conforming_Delaunay();
-    return;
-  }
   conform.init_Delaunay();
-  for (long long added = 0; added < budget && conform.step_by_step_conforming_Delaunay(); ++added) {
-  }
+  run_steps([&] { return conform.step_by_step_conforming_Delaunay(); }, budget, cap, "-D");
 }
 
 /// q or a (with D or S): CGAL::Delaunay_mesher_2 on the marked domain under the angle bound,
-/// max_area and the sizing field, at most `budget` points (negative: no limit).
+/// max_area and the sizing field, at most `budget` points (negative: no limit) and never past
+/// runaway_cap.
 inline void refine(cdt& tr, const mesh_criteria& c, const any_sizing& sizing, long long budget) {
   using criteria = pdd::cgal::sizing_criteria<cdt, any_sizing>;
+  const long long cap = runaway_cap(tr, c.max_area);
   CGAL::Delaunay_mesher_2<cdt, criteria> mesher(tr, criteria(c.shape_bound(), c.max_area, sizing));
   mesher.init(true); // the domain is marked already
-  if (budget < 0) {
-    mesher.refine_mesh();
-    return;
-  }
-  for (long long added = 0; added < budget && mesher.step_by_step_refine_mesh(); ++added) {
-  }
+  run_steps([&] { return mesher.step_by_step_refine_mesh(); }, budget, cap, "-D or -S");
 }
 
 /// The marker of every Steiner vertex on a segment (indexed by output id - n; 0 elsewhere):
