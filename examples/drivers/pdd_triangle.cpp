@@ -4,10 +4,10 @@
 //
 //   pdd-triangle [-SWITCHES ...] INPUT[.poly] [--threads T] [--subdomains N]
 //
-// Switches (Triangle 1.6's letters; pdd::triangle::parse_switches): p, q[angle], a[area],
-// a (regional area bounds), A, c, e, v, Q, V, N, E, P, B, I, O, z, j, n. Without p (and a .poly
-// name) the input is a vertex set, NAME.node. Every other switch (-r among them: pdd cannot
-// refine a previous mesh) is refused by name.
+// Switches (Triangle 1.6's letters; pdd::triangle::parse_switches): p, r, q[angle], a[area],
+// a (regional area bounds), A, c, D, S[n], e, v, o2, Q, V, N, E, P, B, I, O, z, j, n (and i F l
+// s L X, ignored). Without p (and a .poly name) the input is a vertex set, NAME.node. Every
+// other switch is refused by name, with the reason.
 // Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 4 internal error.
 #include "version_flag.hpp"
 
@@ -88,8 +88,19 @@ void print_statistics(const pdd::pslg& in, const pdd::triangle::triangulation& t
   std::printf("\n");
 }
 
+/// True when D or S take the whole domain on one triangulation (a PSLG, a previous mesh, or a
+/// vertex set's hull with q or a; detail::conforming_path).
+bool one_triangulation(const pdd::triangle::switches& sw) {
+  return (sw.poly || sw.quality || sw.refine) && pdd::triangle::detail::conforming_path(sw);
+}
+
 /// How long meshing took, in how many subdomains, and how the pipeline read the domain.
-void report_meshing(const pdd::triangle::triangulation& t, double ms) {
+void report_meshing(const pdd::triangle::triangulation& t, const pdd::triangle::switches& sw,
+                    double ms) {
+  if (one_triangulation(sw)) {
+    std::printf("Mesh milliseconds:  %.0f (1 subdomain: -D and -S mesh the whole domain)\n\n", ms);
+    return;
+  }
   if (t.runs.empty()) { // no q or a: the (constrained) Delaunay triangulation
     std::printf("Delaunay milliseconds:  %.0f\n\n", ms);
     return;
@@ -178,9 +189,12 @@ void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::swit
 /// What pdd-triangle is about to do, as Triangle announces it; with V the switches it ignores.
 void announce(const pdd::triangle::switches& sw) {
   if (sw.refine) std::printf("Refining the previous mesh.\n");
-  std::printf(sw.quality ? "Meshing with pdd's decoupled pipeline.\n"
-              : sw.poly  ? "Constructing constrained Delaunay triangulation (CGAL).\n"
-                         : "Constructing Delaunay triangulation (CGAL).\n");
+  std::printf(one_triangulation(sw)
+                  ? "Meshing the whole domain on one triangulation (CGAL's Mesh_2: "
+                    "conforming Delaunay with -D, at most -S Steiner points).\n"
+              : sw.quality ? "Meshing with pdd's decoupled pipeline.\n"
+              : sw.poly    ? "Constructing constrained Delaunay triangulation (CGAL).\n"
+                           : "Constructing Delaunay triangulation (CGAL).\n");
   if (sw.verbose > 0 && !sw.ignored.empty())
     std::printf("Ignoring switch(es) -%s: they choose Triangle's internal algorithms, which pdd "
                 "does not use.\n",
@@ -206,7 +220,7 @@ int run(const cli_options& o) {
   const pdd::triangle::triangulation t = sw.refine ? pdd::triangle::refine(previous, sw, o.run)
                                                    : pdd::triangle::triangulate(in, sw, o.run);
   if (!sw.quiet) input_warnings(in, t);
-  if (!sw.quiet) report_meshing(t, ms_since(tm));
+  if (!sw.quiet) report_meshing(t, sw, ms_since(tm));
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {
     std::printf("\nTotal running milliseconds:  %.0f\n", ms_since(t0));
@@ -270,9 +284,12 @@ int main(int argc, char** argv) {
   app.add_option("--threads", o.run.threads, "threads (default: all cores)")
       ->check(CLI::Range(1u, 4096u));
   app.footer("Switches (Triangle 1.6's meaning): p (mesh a PSLG; without it the input is a "
-             "vertex set, triangulated), q[angle], a[area], a (regional areas), A, c (convex "
-             "hull), e (.edge), v (Voronoi: .v.node, .v.edge), Q, V, N, E, P, B, I, O, z, j, n. "
-             "Refused, with the reason: r D u w W o Y S g i F l s L C X.");
+             "vertex set, triangulated), r (refine NAME's .node/.ele), q[angle], a[area], a "
+             "(regional areas), A, c (convex hull), D (conforming Delaunay: every triangle "
+             "Delaunay, segments split; the whole domain on one triangulation), S[n] (at most n "
+             "Steiner points; with q, a or D the whole domain on one triangulation), e (.edge), v "
+             "(Voronoi: .v.node, .v.edge), o2, Q, V, N, E, P, B, I, O, z, j, n; i F l s L X are "
+             "accepted and ignored. Refused, with the reason: u w W Y g C.");
   // --version (CLI11) exits before Triangle's switches are read (run_reporting_errors)
   pdd::drivers::add_version_flag(app, "pdd-triangle");
   try {

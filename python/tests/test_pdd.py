@@ -84,7 +84,7 @@ def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
 
 
 @pytest.mark.parametrize("opts, message", [
-    ("pqD", "switch -D"),
+    ("pqYY", "need segment splits"),
     ("a2.6e-7", "no exponent"),
     ("pa0", "greater than zero"),
     ("pqY", "switch -Y"),

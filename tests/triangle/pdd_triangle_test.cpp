@@ -194,6 +194,22 @@ TEST(PddTriangle, RefusesWhatItCannotDo) {
   EXPECT_FALSE(fs::exists(dir / "key.1.node")); // nothing written by a refused run
 }
 
+TEST(PddTriangle, ConformingDelaunayAndSteinerBudget) {
+  const fs::path dir = folder_with_key("pt_conforming");
+  const auto d = run_in(dir, "-pD key.poly");
+  ASSERT_EQ(d.code, 0) << d.output;
+  EXPECT_NE(d.output.find("1 subdomain: -D and -S mesh the whole domain"), std::string::npos)
+      << d.output;
+  EXPECT_EQ(pdd::read_poly(dir / "key.1.poly").holes, pdd::read_poly(dir / "key.poly").holes);
+  const auto s = run_in(dir, "-pq30S7 key.poly"); // -pq30 on the key adds far more than 7
+  ASSERT_EQ(s.code, 0) << s.output;
+  EXPECT_NE(s.output.find("Mesh vertices: 61"), std::string::npos) << s.output;
+  EXPECT_EQ(first_line(dir / "key.1.node").substr(0, 3), "61 ");
+  const auto y = run_in(dir, "-pqYY key.poly");
+  EXPECT_EQ(y.code, 2);
+  EXPECT_NE(y.output.find("need segment splits"), std::string::npos) << y.output;
+}
+
 TEST(PddTriangle, VertexSetEdgesVoronoiAndHull) {
   const fs::path dir = pdd::test::fresh_dir("pt_points");
   // Triangle 1.6's example of the `triangle` package: four corners and the centre, which

@@ -71,17 +71,32 @@ TEST(Switches, EveryFlag) {
 }
 
 TEST(Switches, RefusesUnsupportedSwitchesByName) {
-  for (const char c : std::string("DuwWYSgCohH?x7%")) {
+  for (const char c : std::string("uwWYgCohH?x7%")) {
     const std::string msg = refusal(std::string("p") + c);
     EXPECT_NE(msg.find(std::string("switch -") + c), std::string::npos) << msg;
   }
   EXPECT_TRUE(parse_switches("rpq").refine);
   EXPECT_NE(refusal("pg").find("OFF"), std::string::npos);
   EXPECT_NE(refusal("pY").find("boundary"), std::string::npos);
-  EXPECT_NE(refusal("pk").find("supported: p r q a A c e v o2 Q V N E P B I O z j n, and i F l "
+  EXPECT_NE(refusal("pqYY").find("need segment splits"), std::string::npos);
+  EXPECT_NE(refusal("pk").find("supported: p r q a A c D S e v o2 Q V N E P B I O z j n, and i F l "
                                "s L X, which pdd ignores"),
             std::string::npos);
   EXPECT_NE(refusal("pC").find("pdd-verify"), std::string::npos);
+}
+
+TEST(Switches, ConformingDelaunayAndSteinerBudget) {
+  const auto d = parse_switches("pDq");
+  EXPECT_TRUE(d.conforming && d.quality);
+  EXPECT_LT(d.max_steiner, 0) << "no budget without S";
+  EXPECT_EQ(pdd::triangle::to_string(d), "pq20D");
+  EXPECT_EQ(parse_switches("pqS25").max_steiner, 25);
+  EXPECT_EQ(parse_switches("pS").max_steiner, 0) << "Triangle reads a bare S as 0";
+  const auto s = parse_switches("pS0q30");
+  EXPECT_EQ(s.max_steiner, 0);
+  EXPECT_EQ(s.min_angle_deg, 30.0);
+  EXPECT_EQ(pdd::triangle::to_string(parse_switches("pqS7D")), "pq20DS7");
+  EXPECT_NE(refusal("pS99999999999999999999").find("too large"), std::string::npos);
 }
 
 TEST(Switches, SecondOrderIsO2Only) {

@@ -27,6 +27,12 @@ struct switches {
   /// p, the hull's edges are output as segments (a .poly file)
   bool convex = false;
   bool quality = false; ///< [q] or [a]: Delaunay refinement (Triangle: a implies quality)
+  /// [D] conforming Delaunay: every triangle Delaunay (no vertex in its circumcircle), segments
+  /// split as needed; the whole domain on one triangulation (detail/conforming.hpp)
+  bool conforming = false;
+  /// [S<n>] at most n Steiner points (vertices beyond the input; a bare S is 0, as in
+  /// Triangle); negative: no limit. With q, a or D the whole domain on one triangulation.
+  long long max_steiner = -1;
   /// [q<angle>] the minimum angle in degrees: 20 after a bare q, 0 without q (as Triangle).
   double min_angle_deg = 0.0;
   double max_area = -1.0;            ///< [a<area>] uniform area bound; negative: none
@@ -62,10 +68,11 @@ namespace pdd::triangle {
 
 /// The switch letters parse_switches accepts, for messages and documentation.
 inline constexpr std::string_view supported_switches =
-    "p r q a A c e v o2 Q V N E P B I O z j n i F l s L X";
+    "p r q a A c D S e v o2 Q V N E P B I O z j n i F l s L X";
 
 /// Parses a switch string as Triangle does: one letter per switch, in any order and any
-/// number of times; `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,
+/// number of times; `S` takes the digits that follow it (none: 0, as Triangle reads a bare S);
+/// `q` and `a` take the digits and '.' that follow them (so `a0.00000026`,
 /// never `a2.6e-7`: Triangle reads no exponent, and neither does pdd: an `e` right after such a
 /// number, followed by a digit or a sign, is refused as an exponent); a bare `a` asks for
 /// the regional area bounds, and `a` with and without a number may both appear. A single
@@ -74,7 +81,8 @@ inline constexpr std::string_view supported_switches =
 /// `o` must be followed by `2` (o2: Triangle's only higher order).
 /// \throws switch_error naming the switch for every letter that is not supported (see
 ///   detail::refusal for the reasons given), an area that is not > 0 or a number that does
-///   not parse (`q1.2.3`), an exponent after a number (`a2.6e-7`) or an order other than 2.
+///   not parse (`q1.2.3`), an exponent after a number (`a2.6e-7`), a Steiner count too large
+///   for a long long or an order other than 2.
 /// Complexity O(length). Thread-safety: reentrant.
 inline switches parse_switches(std::string_view text, switches s = {}) {
   if (text.starts_with('-')) text.remove_prefix(1);
@@ -97,6 +105,10 @@ inline switches parse_switches(std::string_view text, switches s = {}) {
           throw switch_error("switch -a" + std::string(number) +
                              ": the maximum area must be greater than zero");
       }
+      continue;
+    }
+    if (c == 'S') {
+      s.max_steiner = detail::read_steiner_count(text, i);
       continue;
     }
     if (c == 'o') {

@@ -72,6 +72,12 @@ inline void finish_tables(triangulation& out, const switches& sw,
 /// printing: the caller (pdd-triangle, the Python module) honours them; i, F, l,
 /// s, L, X choose Triangle's internal algorithms and change nothing here.
 ///
+/// With D (conforming Delaunay), or S (at most max_steiner Steiner points) with q or a, the
+/// whole domain is meshed on one CGAL triangulation instead of by pdd::generate
+/// (detail::conforming_mesh: every triangle Delaunay against every vertex with D, segment
+/// pieces and the vertices on them with their segment's marker); S without q, a or D adds
+/// nothing, as in Triangle.
+///
 /// The domain with p is Triangle's (pdd::validate): every face of the segments' arrangement not
 /// reachable from infinity or from a hole point without crossing a segment; internal and
 /// dangling segments are mesh edges and isolated vertices inside the domain mesh vertices.

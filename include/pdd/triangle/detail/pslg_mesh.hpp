@@ -7,6 +7,8 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/validate.hpp>
+#include <pdd/sizing/regional.hpp>
+#include <pdd/triangle/detail/conforming.hpp>
 #include <pdd/triangle/detail/constrained_delaunay.hpp>
 #include <pdd/triangle/detail/face_regions.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
@@ -46,13 +48,27 @@ inline void close_convex_hull(pslg& g) {
   }
 }
 
+/// Switch D, or S with q or a: the whole domain on one triangulation (conforming_mesh), with a
+/// alone the regions' area bounds (pdd::regional_sizing, as mesh_face_regions).
+inline triangulation conforming_pslg(pslg domain, const switches& sw) {
+  any_sizing sizing;
+  if (sw.regional_areas && !domain.regions.empty()) {
+    domain.rule = domain_rule::triangle;
+    regional_sizing field(domain);
+    if (field.bounded_regions() > 0) sizing = std::move(field);
+  }
+  return conforming_mesh(std::move(domain), sw, sizing);
+}
+
 /// Meshes a PSLG as `triangle -p<sw>` would (see triangulate): without q or a its constrained
-/// Delaunay triangulation, with them pdd's pipeline; the input vertices come first in the
-/// result, in input order.
+/// Delaunay triangulation, with them pdd's pipeline, with D (or S and q or a) one
+/// triangulation (conforming_pslg); the input vertices come first in the result, in input
+/// order.
 inline triangulation triangulate_pslg(pslg domain, const switches& sw,
                                       const triangulate_options& o) {
   if (sw.ignore_holes) domain.holes.clear();
   if (sw.convex) close_convex_hull(domain);
+  if (conforming_path(sw)) return conforming_pslg(std::move(domain), sw);
   if (!sw.quality) return constrained_delaunay(std::move(domain), sw); // no Steiner point
   const bool closed_loops = has_closed_loops(domain);                  // validates
   const generate_options gopt = options_for(sw, o);

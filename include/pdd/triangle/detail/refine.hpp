@@ -11,6 +11,7 @@
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/io/previous_mesh.hpp>
 #include <pdd/sizing/background_mesh.hpp>
+#include <pdd/triangle/detail/conforming.hpp>
 #include <pdd/triangle/detail/constrained_delaunay.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/detail/regions.hpp>
@@ -130,13 +131,19 @@ inline triangulation refine_previous(const previous_mesh& m, const switches& sw,
   check_previous(m);
   const pslg g = previous_domain(m);
   triangulation out;
-  if (!sw.quality) {
+  any_sizing sizing;
+  if (sw.regional_areas && !m.triangle_areas.empty())
+    sizing = background_mesh_sizing(m.input.vertices, m.triangles, m.triangle_areas,
+                                    background_mesh_sizing::interpolation::per_triangle);
+  if (conforming_path(sw)) {
+    switches one = sw;
+    one.regional_attributes = false; // carried from the previous triangles below
+    out = conforming_mesh(g, one, sizing);
+  } else if (!sw.quality) {
     out = constrained_delaunay(g, switches{});
   } else {
     generate_options gopt = options_for(sw, o);
-    if (sw.regional_areas && !m.triangle_areas.empty())
-      gopt.sizing = background_mesh_sizing(m.input.vertices, m.triangles, m.triangle_areas,
-                                           background_mesh_sizing::interpolation::per_triangle);
+    gopt.sizing = sizing;
     generate_result r = generate(g, gopt);
     out.mesh = std::move(r.mesh);
     out.runs.push_back(std::move(r.statistics));

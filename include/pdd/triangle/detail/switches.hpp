@@ -29,12 +29,13 @@ struct refused_switches {
 };
 
 inline constexpr refused_switches refusal_reasons[] = {
-    {"D", " (conforming Delaunay) is not supported: pdd's meshes are constrained Delaunay"},
     {"u", " (a user-defined triunsuitable test) is not supported"},
     {"wW", " (weighted Delaunay) is not supported"},
-    {"Y", " (no Steiner points on the boundary) is not supported: pdd splits boundary segments "
-          "when refinement needs it"},
-    {"S", " (a Steiner point budget) is not supported"},
+    {"Y", " (-Y: no Steiner points on the boundary, -YY: on any segment) is not supported: "
+          "pdd's guarantees need segment splits (Delaunay refinement splits a segment that a "
+          "new vertex would encroach instead of inserting that vertex, which is how q's angle "
+          "bound and D's Delaunay property are met next to segments; without splits neither "
+          "holds, nor does refinement end)"},
     {"g", " (OFF output for Geomview) is not supported"},
     {"C", " (Triangle's check of its own data structures) is not supported: pdd-verify checks "
           "a mesh (exact Delaunay, conformity, the angle and area bounds)"},
@@ -46,8 +47,22 @@ inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
   for (const refused_switches& r : refusal_reasons)
     if (r.letters.find(c) != std::string_view::npos) return sw + std::string(r.reason);
-  return sw + " is not a Triangle switch pdd supports (supported: p r q a A c e v o2 Q V N E P B "
-              "I O z j n, and i F l s L X, which pdd ignores)";
+  return sw + " is not a Triangle switch pdd supports (supported: p r q a A c D S e v o2 Q V N E "
+              "P B I O z j n, and i F l s L X, which pdd ignores)";
+}
+
+/// The count after `S` at position i (digits only; none: 0, as Triangle reads a bare S);
+/// advances i past it. \throws switch_error for a count too large for a long long.
+inline long long read_steiner_count(std::string_view text, std::size_t& i) {
+  const std::size_t start = i;
+  while (i < text.size() && text[i] >= '0' && text[i] <= '9')
+    ++i;
+  long long n = 0;
+  const auto r = std::from_chars(text.data() + start, text.data() + i, n);
+  if (i > start && r.ec != std::errc{})
+    throw switch_error("switch -S" + std::string(text.substr(start, i - start)) +
+                       ": the Steiner point count is too large");
+  return n;
 }
 
 /// The order after `o` at position i (Triangle's -o2; no other order exists): advances i past
@@ -97,6 +112,7 @@ inline constexpr flag_switch flag_switches[] = {
     {'p', &switches::poly},
     {'r', &switches::refine},
     {'c', &switches::convex},
+    {'D', &switches::conforming},
     {'e', &switches::edges},
     {'v', &switches::voronoi},
     {'A', &switches::regional_attributes},
@@ -150,6 +166,8 @@ inline std::string format_switches(const switches& s) {
   if (s.quality && s.min_angle_deg > 0.0) out += 'q' + plain_number(s.min_angle_deg);
   if (s.max_area > 0.0) out += 'a' + plain_number(s.max_area);
   flag(s.regional_areas, 'a');
+  flag(s.conforming, 'D');
+  if (s.max_steiner >= 0) out += 'S' + std::to_string(s.max_steiner);
   flag(s.regional_attributes, 'A');
   flag(s.quiet, 'Q');
   out.append(s.verbose, 'V');
