@@ -188,8 +188,9 @@ void mesh_into_files(const cli_options& o, mesh_run& r, progress& bar) {
   const auto t0 = std::chrono::steady_clock::now();
   pdd::pipeline<M> pl(r.domain, r.options, M{});
   pl.template check_memory<pdd::resumable_piece_sink>(); // up front, before any work
-  check_disk_space(o, pl.planned_triangles(), pl.subdomains());
   const std::filesystem::path dir = o.per_subdomain_dir;
+  check_disk_space(o, pl.planned_triangles(), pl.subdomains(),
+                   o.resume.resume ? pdd::drivers::resumable_bytes(dir) : 0);
   pdd::piece_manifest manifest = pdd::drivers::prepare_output_directory(
       dir, o.format, o.resume,
       pdd::drivers::mesh_fingerprint(o, pl.subdomains(), pdd::path_name(pl.plan().path),

@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -135,6 +136,19 @@ inline std::optional<pdd::piece_manifest> read_manifest(const std::filesystem::p
     throw pdd::error(p.string() + ": not a pdd manifest (" + e.what() +
                      "); use --overwrite to start again");
   }
+}
+
+/// The bytes of the pieces the manifest in `dir` lists that are there with their size (what a
+/// --resume may keep; their checksums are checked later), for the disk-space check. 0 without
+/// a manifest. \throws as read_manifest.
+inline std::uintmax_t resumable_bytes(const std::filesystem::path& dir) {
+  const std::optional<pdd::piece_manifest> m = read_manifest(dir);
+  std::uintmax_t n = 0;
+  for (const auto& [id, record] : m ? m->pieces : std::map<pdd::index_t, pdd::piece_record>{}) {
+    std::error_code ec;
+    if (std::filesystem::file_size(dir / record.file, ec) == record.size && !ec) n += record.size;
+  }
+  return n;
 }
 
 /// True when `dir` exists and holds any entry.

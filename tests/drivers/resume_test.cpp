@@ -204,4 +204,18 @@ TEST(Resume, ANonEmptyDirectoryNeedsResumeOrOverwrite) {
   EXPECT_EQ(pdd_mesh(pipe_poly, options + "--resume").code, 2); // no per-subdomain output
 }
 
+// The disk-space check of a --resume counts the bytes of the pieces it may keep as free: a
+// finished run resumes where the whole output would not fit any more, a fresh run is refused.
+TEST(Resume, TheDiskCheckCountsThePiecesKept) {
+  const fs::path root = pdd::test::fresh_dir("disk");
+  const fs::path out = root / "out";
+  const std::string options = "--max-area 1e-3 --subdomains 16 --assume-free-bytes 30000 ";
+  ASSERT_EQ(pdd_mesh(pipe_poly, "--max-area 1e-3 --subdomains 16 " + into(out, "vtu")).code, 0);
+  const auto fresh = pdd_mesh(pipe_poly, options + into(root / "fresh", "vtu"));
+  EXPECT_EQ(fresh.code, 1) << fresh.output;
+  EXPECT_NE(fresh.output.find("would need about"), std::string::npos) << fresh.output;
+  const auto resumed = pdd_mesh(pipe_poly, options + "--resume " + into(out, "vtu"));
+  EXPECT_EQ(resumed.code, 0) << resumed.output;
+}
+
 } // namespace resume_test
