@@ -183,17 +183,19 @@ inline std::uintmax_t free_bytes_for(const std::filesystem::path& dir) {
 /// The disk-space check before a per-subdomain output (unless --no-disk-check): the estimated
 /// bytes of `triangles` triangles in `pieces` pieces of the chosen --format
 /// (pdd::estimated_piece_bytes) against the free space of the output folder's file system (or
-/// --assume-free-bytes). Non-finite estimates are not checked.
+/// --assume-free-bytes), to which `reused` adds the bytes of pieces already on disk (those a
+/// --resume keeps). Non-finite estimates are not checked.
 /// \throws pdd::limit_error (exit code 1) with the estimate and the free space when it does
 /// not fit; pdd::error when the free space cannot be asked.
-inline void check_disk_space(const mesh_options& o, double triangles, std::size_t pieces) {
+inline void check_disk_space(const mesh_options& o, double triangles, std::size_t pieces,
+                             std::uintmax_t reused = 0) {
   if (o.no_disk_check || o.per_subdomain_dir.empty() || !(triangles >= 0.0) ||
       triangles == std::numeric_limits<double>::infinity())
     return;
   const double need = pdd::estimated_piece_bytes(
       o.format, triangles, static_cast<double>(std::max<std::size_t>(1, pieces)));
   const std::uintmax_t free =
-      o.assume_free_bytes ? *o.assume_free_bytes : free_bytes_for(o.per_subdomain_dir);
+      reused + (o.assume_free_bytes ? *o.assume_free_bytes : free_bytes_for(o.per_subdomain_dir));
   if (need <= static_cast<double>(free)) return;
   char text[2048];
   std::snprintf(

@@ -7,7 +7,7 @@
 //            [--svg-window X0,Y0,X1,Y1] [--svg-histogram FILE.svg] [--quiet]
 //            [--sizing EXPR] [--background FILE.node] [--area-grid FILE] [--max-triangles N]
 //            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
-//            [--geometric-sizing auto|on|off] [-A|--region-attributes]
+//            [--geometric-sizing auto|on|off] [-A|--region-attributes] [--resume|--overwrite]
 //
 // Exit codes: 0 ok, 1 bad input (also a run refused up front: its estimated size exceeds
 // --max-triangles or memory, or its per-subdomain output the free disk space), 2 usage, 3
@@ -16,6 +16,7 @@
 // written then).
 #include "exit_code.hpp"
 #include "mesh_options.hpp"
+#include "resume_options.hpp"
 #include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
@@ -32,6 +33,7 @@
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
 #include <pdd/mesh/region_attributes.hpp>
+#include <pdd/mesh/resumable_piece_sink.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
@@ -42,6 +44,7 @@
 #include <pdd/sizing/min_sizing.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
+#include <pdd/version.hpp>
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -56,6 +59,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <system_error>
 #include <vector>
 
 namespace {
@@ -67,7 +71,8 @@ struct cli_options : pdd::drivers::mesh_options {
   std::string output, svg, svg_histogram;
   std::vector<double> svg_window; ///< x0, y0, x1, y1 of the inset (empty: automatic)
   bool verify = false, compare_monolithic = false;
-  bool region_attributes = false; ///< -A: every triangle's regional attribute with the mesh
+  bool region_attributes = false;      ///< -A: every triangle's regional attribute with the mesh
+  pdd::drivers::resume_options resume; ///< --resume, --overwrite
 };
 
 /// Stage lines and the progress bar on stderr, drawn only when stderr is a terminal.
@@ -81,13 +86,16 @@ public:
     total_ = total;
     t0_ = std::chrono::steady_clock::now();
   }
+  /// --resume: the bar starts from the pieces kept (their time is not in the rate).
+  void kept(std::size_t pieces) { done_ = kept_ = pieces; }
   void subdomain_done(std::size_t triangles) {
     const std::size_t done = done_.fetch_add(1) + 1;
     const std::size_t tri = triangles_.fetch_add(triangles) + triangles;
     if (!enabled_) return;
     const std::lock_guard lock(mutex_);
     const double s = pdd::seconds_since(t0_);
-    const double eta = done < total_ ? s / static_cast<double>(done) * (total_ - done) : 0.0;
+    const double eta =
+        done < total_ ? s / static_cast<double>(done - kept_) * (total_ - done) : 0.0;
     std::fprintf(stderr,
                  "\r\033[Kpdd-mesh: meshing %zu/%zu subdomains, %zu triangles, %.2f M tri/s, "
                  "ETA %.0f s",
@@ -99,7 +107,7 @@ public:
 
 private:
   bool enabled_;
-  std::size_t total_ = 0;
+  std::size_t total_ = 0, kept_ = 0;
   std::atomic<std::size_t> done_{0}, triangles_{0};
   std::chrono::steady_clock::time_point t0_;
   std::mutex mutex_;
@@ -142,7 +150,8 @@ struct mesh_run {
   std::optional<pdd::shielding_statistics> sst;
   std::optional<pdd::verification_report> report;
   std::optional<std::size_t> monolithic_triangles;
-  std::vector<double> attributes; ///< -A: the regional attribute of every triangle
+  std::size_t pieces_kept = 0, pieces_meshed = 0; ///< --output-per-subdomain (--resume)
+  std::vector<double> attributes;                 ///< -A: the regional attribute of every triangle
   double t_read = 0.0, t_verify = 0.0, t_monolithic = 0.0, t_write = 0.0, t_total = 0.0;
 
   std::size_t triangles() const { return mesh ? mesh->triangles.size() : gs.triangles; }
@@ -169,16 +178,28 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
 }
 
-/// --output-per-subdomain: the plan first (its size estimate), the disk-space check on it, then
-/// the meshes into files of the --format, each checked and measured on its way (the index comes
-/// last; a failed run leaves no file of its own).
+/// --output-per-subdomain: the plan first (its size estimate), the disk-space check on it, the
+/// output directory (pdd::drivers::prepare_output_directory: its manifest, with --resume the
+/// pieces kept), then the other meshes into files of the --format, each checked and measured on
+/// its way (the index comes last; a failed run leaves no piece of its own and, unless resumed,
+/// no manifest).
 template <pdd::DelaunayMesher M>
 void mesh_into_files(const cli_options& o, mesh_run& r, progress& bar) {
   const auto t0 = std::chrono::steady_clock::now();
   pdd::pipeline<M> pl(r.domain, r.options, M{});
-  pl.template check_memory<pdd::piece_directory_sink>(); // up front, before any work
-  check_disk_space(o, pl.planned_triangles(), pl.subdomains());
-  pdd::piece_directory_sink files(o.per_subdomain_dir, o.format);
+  pl.template check_memory<pdd::resumable_piece_sink>(); // up front, before any work
+  const std::filesystem::path dir = o.per_subdomain_dir;
+  check_disk_space(o, pl.planned_triangles(), pl.subdomains(),
+                   o.resume.resume ? pdd::drivers::resumable_bytes(dir) : 0);
+  pdd::piece_manifest manifest = pdd::drivers::prepare_output_directory(
+      dir, o.format, o.resume,
+      pdd::drivers::mesh_fingerprint(o, pl.subdomains(), pdd::path_name(pl.plan().path),
+                                     pdd::version));
+  pdd::resumable_piece_sink files(
+      dir, o.format, std::move(manifest),
+      [&](const pdd::piece_manifest& m) { pdd::drivers::save_manifest(dir, m); });
+  pl.keep_subdomains(files.kept());
+  bar.kept(files.kept().size());
   pdd::quality_check_sink checked(files, r.domain, r.options.criteria, r.sizing);
   pdd::statistics_sink measured(checked, r.domain, r.sizing);
   progress_sink sink(measured, bar);
@@ -186,10 +207,15 @@ void mesh_into_files(const cli_options& o, mesh_run& r, progress& bar) {
     pl.mesh(sink);
   } catch (const pdd::error&) {
     files.remove_written(); // no index was written: leave no pieces of a failed run either
+    std::error_code ec;     // best effort too; the run's own error is the one to report
+    if (!o.resume.resume) std::filesystem::remove(dir / pdd::piece_manifest_name, ec);
     throw;
   }
   r.gs = std::move(pl.statistics());
   r.gs.timings.total = pdd::seconds_since(t0);
+  r.gs.triangles = files.triangles(); // the kept pieces' and the new ones'
+  r.pieces_kept = files.kept().size();
+  r.pieces_meshed = files.meshed();
   r.st = measured.statistics();
   r.sst = measured.shielding();
 }
@@ -261,15 +287,21 @@ void compare_monolithic(mesh_run& r, progress& bar) {
   r.t_monolithic = pdd::seconds_since(t0);
 }
 
+/// The per-subdomain part of the --stats JSON: where, in which format, and what --resume kept.
+void add_piece_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) {
+  j["per_subdomain_dir"] = o.per_subdomain_dir;
+  j["format"] = pdd::to_string(o.format);
+  j["resumed"] = o.resume.resume;
+  j["pieces_kept"] = r.pieces_kept; // intact pieces of the run resumed, not meshed again
+  j["pieces_meshed"] = r.pieces_meshed;
+}
+
 /// The mesh and quality part of the --stats JSON.
 void add_mesh_stats(const cli_options& o, const mesh_run& r, nlohmann::json& j) {
   const pdd::generate_statistics& gs = r.gs;
   j["input"] = o.input;
   j["output"] = o.output.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.output);
-  if (!o.per_subdomain_dir.empty()) { // the per-subdomain files: where and in which format
-    j["per_subdomain_dir"] = o.per_subdomain_dir;
-    j["format"] = pdd::to_string(o.format);
-  }
+  if (!o.per_subdomain_dir.empty()) add_piece_stats(o, r, j);
   j["triangles"] = r.triangles();
   j["vertices"] = r.mesh ? nlohmann::json(r.mesh->vertices.size()) : nullptr;
   j["estimated_triangles"] = gs.estimated_triangles; // the up-front estimate
@@ -382,6 +414,8 @@ void print_summary(const cli_options& o, const mesh_run& r) {
   if (!o.per_subdomain_dir.empty())
     std::printf("pdd-mesh: wrote %s/%s and %zu subdomain files (%s)\n", o.per_subdomain_dir.c_str(),
                 pdd::piece_index_name(o.format), r.gs.subdomains, pdd::to_string(o.format));
+  if (o.resume.resume)
+    std::printf("pdd-mesh: resumed: %zu pieces kept, %zu meshed\n", r.pieces_kept, r.pieces_meshed);
   if (r.mesh && !o.svg.empty()) std::printf("pdd-mesh: wrote %s\n", o.svg.c_str());
   if (r.mesh && !o.svg_histogram.empty())
     std::printf("pdd-mesh: wrote %s\n", o.svg_histogram.c_str());
@@ -478,6 +512,7 @@ int main(int argc, char** argv) {
       "every triangle carries the attribute of the .poly region in its face (0 without one; "
       "Triangle's -A): .vtu cell data region_attribute, the .ele attribute column, .msh "
       "physical tags (integer attributes)");
+  pdd::drivers::add_resume_options(app, o.resume, per);
   auto* out = app.get_option("--output");
   per->excludes(ver)->excludes(svg)->excludes(out)->excludes(win)->excludes(hist)->excludes(attr);
   try {

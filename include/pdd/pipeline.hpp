@@ -34,6 +34,7 @@
 #include <cstddef>
 #include <optional>
 #include <utility>
+#include <vector>
 
 namespace pdd {
 
@@ -91,6 +92,10 @@ public:
                              .max_triangles = options_.max_triangles,
                              .check_memory = options_.check_memory});
   }
+
+  /// Subdomains mesh() does not mesh in its first round: their meshes exist already (a
+  /// resumed run's intact pieces; generate_options::kept_subdomains).
+  void keep_subdomains(std::vector<index_t> ids) { options_.kept_subdomains = std::move(ids); }
 
   /// The size estimate the plan uses (pdd::estimate_mesh_size) and its cause.
   const mesh_size_estimate& size_estimate() const noexcept { return run_.plan.estimate; }

@@ -105,6 +105,7 @@ TEST(DurableOutput, AKilledPerSubdomainRunLeavesCompletePiecesAndNoIndex) {
       const std::vector<std::string> names = visible_files(out);
       const bool finished = r.code == 0;
       for (const std::string& name : names) {
+        if (name == "pdd-manifest.json") continue; // lists the pieces so far (resume_test)
         const bool index = name == "mesh.pvtu" || name == "mesh.pddi";
         EXPECT_TRUE(finished || !index) << format << " killed at " << t << " s: an index";
         EXPECT_TRUE(pdd::test::read_text(out / name) == pdd::test::read_text(reference / name))

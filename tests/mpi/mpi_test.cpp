@@ -62,7 +62,8 @@ fs::path threaded_output(const mesh_case& c, const std::string& name) {
 
 /// Expects the same file names with the same bytes in a and b; returns the number of files.
 std::size_t expect_same_files(const fs::path& a, const fs::path& b, const std::string& what) {
-  const std::vector<std::string> names = pdd::test::dir_entries(a);
+  std::vector<std::string> names = pdd::test::dir_entries(a);
+  std::erase(names, std::string("pdd-manifest.json")); // pdd-mesh's; pdd-mesh-mpi writes none yet
   EXPECT_EQ(names, pdd::test::dir_entries(b)) << what;
   std::size_t same = 0;
   for (const std::string& n : names) {

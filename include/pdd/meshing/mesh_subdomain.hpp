@@ -39,6 +39,10 @@ struct meshing_options {
   /// first; Algorithm 7.2: the expected triangles of each subdomain, e.g.
   /// gradation_report::expected_triangles). Empty: area / criteria.max_area (pdd::expected_work).
   std::vector<double> expected_work{};
+  /// Subdomains whose meshes the sink has already (a resumed run's intact pieces, see
+  /// pdd::resumable_piece_sink): not meshed in the first round. An invariance repair round
+  /// may still mesh and deliver one of them again (never with a Ruppert-type kernel).
+  std::vector<index_t> kept{};
 };
 
 /// What pdd::mesh_subdomain made of one subdomain.

@@ -23,7 +23,8 @@ namespace pdd {
 /// `executor` (largest expected work, area / max_area, first), and delivers every mesh whose
 /// interface pieces are all still edges (Corollary 13; see split_interface_pieces) to
 /// `sink.consume(id, mesh)` with triangle markers set to the id; calls sink.start(n) first
-/// (when the sink has it) and sink.finish() at the end.
+/// (when the sink has it) and sink.finish() at the end. The subdomains of options.kept (whose
+/// meshes the sink has from an earlier run) are not meshed in the first round.
 ///
 /// Invariance repair (never needed when the kernel is Ruppert-type and the decomposition meets
 /// the method's preconditions): a subdomain with a split interface piece is not delivered;
@@ -43,14 +44,25 @@ meshing_statistics mesh_subdomains(decoupled_decomposition& dd, const meshing_op
   detail::meshing_run<M, S> run(dd, options, mesher, sink);
   const auto m = static_cast<index_t>(dd.num_subdomains());
   start_sink(sink, m);
-  executor.run(run.work, [&](index_t s) { run.mesh_one(s); });
-  while (run.has_failures()) {
-    const std::vector<index_t> ids = run.prepare_repair(options.max_repairs);
+  const auto mesh_these = [&](const std::vector<index_t>& ids) {
     std::vector<double> work(ids.size());
     for (std::size_t j = 0; j < ids.size(); ++j)
       work[j] = run.work[ids[j]];
     executor.run(work, [&](index_t j) { run.mesh_one(ids[j]); });
+  };
+  if (options.kept.empty()) {
+    executor.run(run.work, [&](index_t s) { run.mesh_one(s); });
+  } else {
+    std::vector<bool> kept(m, false);
+    for (const index_t s : options.kept)
+      if (s < m) kept[s] = true;
+    std::vector<index_t> ids;
+    for (index_t s = 0; s < m; ++s)
+      if (!kept[s]) ids.push_back(s);
+    mesh_these(ids);
   }
+  while (run.has_failures())
+    mesh_these(run.prepare_repair(options.max_repairs));
   sink.finish();
   return std::move(run.stats);
 }

@@ -68,7 +68,8 @@ inline generate_statistics planned_statistics(const run_plan& p, unsigned thread
 /// The kernel's options for the subdomains of `s` (the field of the path, Algorithm 7.2's
 /// expected triangles for the order of work).
 inline meshing_options meshing_options_for(const run_state& s, const generate_options& o) {
-  return {o.criteria, o.decoupling.max_repairs, s.mesh_field, s.gradation.expected_triangles};
+  return {o.criteria, o.decoupling.max_repairs, s.mesh_field, s.gradation.expected_triangles,
+          o.kept_subdomains};
 }
 
 namespace detail {

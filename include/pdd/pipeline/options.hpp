@@ -2,6 +2,7 @@
 /// pdd::generate_options: the options of pdd::generate and pdd::pipeline.
 #pragma once
 
+#include <pdd/core/index.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
 #include <pdd/errors.hpp>
@@ -11,6 +12,7 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 namespace pdd {
 
@@ -135,6 +137,10 @@ struct generate_options {
   /// Bounds of the geometric path's loop (target over-refinement, rounds, subdomains; the
   /// pipeline raises max_subdomains to at least 4 N).
   geometric_decompose_options geometric_loop{};
+  /// Subdomains not meshed in mesh()'s first round: their meshes exist already (a resumed
+  /// run's intact pieces, pdd::resumable_piece_sink; meshing_options::kept). Set it after the
+  /// plan is known (pipeline::keep_subdomains); ignored when N == 1.
+  std::vector<index_t> kept_subdomains{};
 };
 
 /// Rejects a generate_options whose embedded madd_options contradicts the pipeline's own
