@@ -8,14 +8,19 @@
 //            [--max-area A] [--sizing EXPR] [--background FILE.node] [--area-grid FILE]
 //            [--subdomains N] [--threads T] [--stats FILE.json] [--quiet]
 //            [--format vtu|binary] [--no-disk-check] [--assume-free-bytes N]
-//            [--kernel cgal|native]
+//            [--kernel cgal|native] [--resume|--overwrite]
 //
 // Every subdomain file is bitwise the one `pdd-mesh ... --output-per-subdomain DIR` writes with
-// the same N. Exit codes as pdd-mesh (exit_code.hpp), the same on every rank; rank 0 prints the
-// error, and a failed run leaves no subdomain file, no index and no statistics. The disk-space
-// check (rank 0, on the plan's estimate, before any file) refuses with exit code 1 on every rank.
+// the same N, and so are the index and the manifest (rank 0 keeps it as the ranks report their
+// finished pieces; its fingerprint is pdd-mesh's, so either program resumes the other's
+// directory). --resume hands out only the subdomains whose pieces are not intact; a non-empty
+// directory is refused without --resume or --overwrite. Exit codes as pdd-mesh (exit_code.hpp),
+// the same on every rank; rank 0 prints the error, and a failed run leaves no subdomain file of
+// its own, no index and no statistics. The disk-space check (rank 0, on the plan's estimate,
+// before any file) refuses with exit code 1 on every rank.
 #include "../exit_code.hpp"
 #include "../mesh_options.hpp"
+#include "../resume_options.hpp"
 #include "../version_flag.hpp"
 
 #include <pdd/geometry/properties.hpp>
@@ -29,6 +34,7 @@
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mpi/collectively.hpp>
 #include <pdd/mpi/mesh_subdomains.hpp>
+#include <pdd/mpi/resumable_piece_sink.hpp>
 #include <pdd/mpi/same_decomposition.hpp>
 #include <pdd/mpi/vtu_directory_sink.hpp>
 #include <pdd/pipeline.hpp>
@@ -36,6 +42,7 @@
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/min_sizing.hpp>
 #include <pdd/sizing/uniform.hpp>
+#include <pdd/version.hpp>
 
 #include <CLI/CLI.hpp>
 #include <mpi.h>
@@ -44,6 +51,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <thread>
@@ -53,6 +61,11 @@
 namespace {
 
 using namespace pdd::drivers; // exit codes, mesh_options
+
+/// The options shared with pdd-mesh (mesh_options.hpp), --resume and --overwrite.
+struct mpi_options : mesh_options {
+  resume_options resume;
+};
 
 /// This rank of the MPI job.
 struct mpi_job {
@@ -72,8 +85,11 @@ struct mpi_run : mpi_job {
   std::string sizing_kind;
   std::optional<pdd::pipeline<M>> path; ///< decomposition and decoupling path
   pdd::mpi::distributed_meshing_statistics meshing;
-  pdd::mesh_statistics st;       ///< rank 0: over all ranks
-  pdd::shielding_statistics sst; ///< rank 0: over all ranks
+  pdd::mesh_statistics st;                                       ///< rank 0: over all ranks
+  pdd::shielding_statistics sst;                                 ///< rank 0: over all ranks
+  std::size_t pieces_kept = 0, pieces_meshed = 0, triangles = 0; ///< rank 0: the manifest's
+  std::size_t planned_n = 0; ///< the plan's N and path before decoupling, as pdd-mesh's
+  std::string planned_path;  ///< fingerprint has them
   double t_path = 0.0, t_mesh = 0.0, t_total = 0.0, peak_rss_mib = 0.0;
 };
 
@@ -106,6 +122,8 @@ void build_path(const mesh_options& o, mpi_run<M>& r) {
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
   r.path.emplace(r.domain, r.options);
   r.path->template check_memory<pdd::counting_sink>();
+  r.planned_n = r.path->subdomains();
+  r.planned_path = pdd::path_name(r.path->plan().path);
   r.path->decouple();
   r.t_path = pdd::seconds_since(t0);
 }
@@ -138,43 +156,91 @@ void gather_statistics(const Measured& measured, mpi_run<M>& r) {
   }
 }
 
-/// Phase 2: checks the free disk space (rank 0, before any file), then meshes the subdomains
-/// over the ranks into per-subdomain files of the --format (each checked before it is
-/// written); a failure on any rank removes every rank's files.
+/// Rank 0 (the others return an empty manifest): the disk-space check (with --resume the
+/// pieces the manifest lists count as free) and the output directory
+/// (pdd::drivers::prepare_output_directory: refused when not empty without --resume or
+/// --overwrite; with --resume the fingerprint checked and the intact pieces kept).
 template <class M>
-void mesh_distributed(const mesh_options& o, mpi_run<M>& r) {
+pdd::piece_manifest prepare_directory(const mpi_options& o, mpi_run<M>& r) {
+  if (r.rank != 0) return {};
+  const std::filesystem::path dir = o.per_subdomain_dir;
+  check_disk_space(o, r.path->planned_triangles(), r.path->subdomains(),
+                   o.resume.resume ? resumable_bytes(dir) : 0);
+  return prepare_output_directory(dir, o.format, o.resume,
+                                  mesh_fingerprint(o, r.planned_n, r.planned_path, pdd::version));
+}
+
+/// The ids of rank 0's kept pieces, on every rank.
+std::vector<pdd::index_t> broadcast_kept(MPI_Comm comm, const pdd::piece_manifest& m) {
+  std::vector<unsigned long long> ids;
+  for (const auto& [id, record] : m.pieces)
+    ids.push_back(id);
+  unsigned long long n = ids.size();
+  MPI_Bcast(&n, 1, MPI_UNSIGNED_LONG_LONG, 0, comm);
+  ids.resize(n);
+  MPI_Bcast(ids.data(), static_cast<int>(n), MPI_UNSIGNED_LONG_LONG, 0, comm);
+  return {ids.begin(), ids.end()};
+}
+
+/// Meshes over the ranks into `sink` (N == 1: on rank 0 alone).
+template <class M, class Sink>
+void mesh_over_ranks(mpi_run<M>& r, Sink& sink, pdd::mpi::resumable_piece_sink& files) {
+  if (r.path->subdomains() <= 1) {
+    pdd::mpi::collectively(r.comm, [&] { mesh_whole_on_rank_0(r, sink); });
+  } else {
+    r.meshing = pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), r.path->meshing(), M{},
+                                          r.threads, sink, files);
+  }
+}
+
+/// Phase 2: prepares the output directory (rank 0, before any file: prepare_directory), then
+/// meshes the subdomains that are not kept over the ranks into per-subdomain files of the
+/// --format (each checked before it is written; rank 0 keeps the manifest); a failure on any
+/// rank removes every rank's new files (and, unless resumed, the manifest).
+template <class M>
+void mesh_distributed(const mpi_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
-  // rank 0 decides whether the output fits on disk; every rank ends with its verdict
+  const std::filesystem::path dir = o.per_subdomain_dir;
+  // rank 0 decides; every rank ends with its verdict
+  pdd::piece_manifest manifest =
+      pdd::mpi::collectively(r.comm, [&] { return prepare_directory(o, r); });
+  r.path->keep_subdomains(broadcast_kept(r.comm, manifest));
+  std::optional<pdd::mpi::resumable_piece_sink> files;
   pdd::mpi::collectively(r.comm, [&] {
-    if (r.rank == 0) check_disk_space(o, r.path->planned_triangles(), r.path->subdomains());
+    files.emplace(r.comm, dir, o.format, std::move(manifest),
+                  [dir](const pdd::piece_manifest& m) { save_manifest(dir, m); });
   });
-  std::optional<pdd::mpi::piece_directory_sink> files;
-  pdd::mpi::collectively(r.comm, [&] { files.emplace(r.comm, o.per_subdomain_dir, o.format); });
   pdd::quality_check_sink checked(*files, r.domain, r.options.criteria, r.sizing);
   pdd::statistics_sink measured(checked, r.domain, r.sizing);
   try {
-    if (r.path->subdomains() <= 1) {
-      pdd::mpi::collectively(r.comm, [&] { mesh_whole_on_rank_0(r, measured); });
-    } else {
-      r.meshing = pdd::mpi::mesh_subdomains(r.comm, r.path->decoupled(), r.path->meshing(), M{},
-                                            r.threads, measured);
-    }
+    mesh_over_ranks(r, measured, *files);
   } catch (const std::exception&) {
     files->remove_written(); // no index was written: leave no pieces of a failed run either
+    std::error_code ec;      // best effort too; the run's own error is the one to report
+    if (r.rank == 0 && !o.resume.resume)
+      std::filesystem::remove(dir / pdd::piece_manifest_name, ec);
     throw;
   }
   gather_statistics(measured, r);
+  r.pieces_kept = files->kept().size();
+  r.pieces_meshed = files->meshed();
+  r.triangles = files->triangles();
   r.t_mesh = pdd::seconds_since(t0);
 }
 
 /// The --stats JSON (rank 0).
 template <class M>
-nlohmann::json statistics_json(const mesh_options& o, const mpi_run<M>& r) {
+nlohmann::json statistics_json(const mpi_options& o, const mpi_run<M>& r) {
   const pdd::generate_statistics& gs = r.path->statistics();
   nlohmann::json j;
   j["input"] = o.input;
-  j["triangles"] = r.st.triangles;
+  j["triangles"] = r.triangles; // the kept pieces' and the new ones'
   j["subdomains"] = gs.subdomains;
+  j["per_subdomain_dir"] = o.per_subdomain_dir;
+  j["format"] = pdd::to_string(o.format);
+  j["resumed"] = o.resume.resume;
+  j["pieces_kept"] = r.pieces_kept; // intact pieces of the run resumed, not meshed again
+  j["pieces_meshed"] = r.pieces_meshed;
   j["ranks"] = r.ranks;
   j["threads_per_rank"] = r.threads;
   j["kernel"] = o.kernel;
@@ -201,7 +267,7 @@ nlohmann::json statistics_json(const mesh_options& o, const mpi_run<M>& r) {
 }
 
 template <class M>
-int run(const mesh_options& o, mpi_run<M>& r) {
+int run(const mpi_options& o, mpi_run<M>& r) {
   const auto t0 = std::chrono::steady_clock::now();
   r.threads = threads_per_rank(r.comm, o.threads);
   MPI_Allreduce(&r.threads, &r.all_threads, 1, MPI_UNSIGNED, MPI_SUM, r.comm);
@@ -219,13 +285,16 @@ int run(const mesh_options& o, mpi_run<M>& r) {
   if (!o.quiet) {
     std::printf("pdd-mesh-mpi: %zu triangles in %zu subdomain(s) on %d rank(s) x %u thread(s), "
                 "%.3f s (imbalance %.3f)\n",
-                r.st.triangles, r.path->subdomains(), r.ranks, r.threads, r.t_total,
+                r.triangles, r.path->subdomains(), r.ranks, r.threads, r.t_total,
                 r.meshing.imbalance());
     std::printf("pdd-mesh-mpi: min angle %.3f deg, max area / bound %.4f\n", r.st.min_angle_deg,
                 r.st.max_area_ratio);
     std::printf("pdd-mesh-mpi: wrote %s/%s and %zu subdomain files (%s)\n",
                 o.per_subdomain_dir.c_str(), pdd::piece_index_name(o.format), r.path->subdomains(),
                 pdd::to_string(o.format));
+    if (o.resume.resume)
+      std::printf("pdd-mesh-mpi: resumed: %zu pieces kept, %zu meshed\n", r.pieces_kept,
+                  r.pieces_meshed);
     if (!o.stats.empty()) std::printf("pdd-mesh-mpi: wrote %s\n", o.stats.c_str());
   }
   return ok;
@@ -235,18 +304,20 @@ int run(const mesh_options& o, mpi_run<M>& r) {
 /// same exit code, rank 0 prints the error.
 /// Runs with kernel M (the run's pipeline is gone before MPI_Finalize).
 template <class M>
-int run_with(const mesh_options& o, const mpi_job& job) {
+int run_with(const mpi_options& o, const mpi_job& job) {
   mpi_run<M> r;
   static_cast<mpi_job&>(r) = job;
   return run(o, r);
 }
 
 int parse_and_run(int argc, char** argv, const mpi_job& job) {
-  mesh_options o;
+  mpi_options o;
   CLI::App app{"pdd-mesh-mpi: pdd-mesh --output-per-subdomain over the ranks of an MPI job"};
   pdd::drivers::add_version_flag(app, "pdd-mesh-mpi");
-  add_mesh_options(app, o, "meshing threads per rank (default: the node's cores / its ranks)")
-      ->required();
+  auto* per =
+      add_mesh_options(app, o, "meshing threads per rank (default: the node's cores / its ranks)")
+          ->required();
+  add_resume_options(app, o.resume, per);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

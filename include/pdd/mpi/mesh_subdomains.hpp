@@ -20,8 +20,8 @@
 #include <algorithm>
 #include <cstddef>
 #include <map>
-#include <numeric>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 namespace pdd::mpi {
@@ -83,6 +83,17 @@ merge_round(const std::vector<gathered_record>& records, distributed_meshing_sta
   return failures;
 }
 
+/// The subdomains of the first round: [0, n) but the kept ones.
+inline std::vector<index_t> first_round(std::size_t n, const std::vector<index_t>& kept) {
+  std::vector<bool> skip(n, false);
+  for (const index_t s : kept)
+    if (s < n) skip[s] = true;
+  std::vector<index_t> ids;
+  for (index_t s = 0; s < n; ++s)
+    if (!skip[s]) ids.push_back(s);
+  return ids;
+}
+
 /// The failing record of the smallest subdomain id, or nullptr (the executors' rule: the
 /// reported error does not depend on timing).
 inline const gathered_record* first_failure(const std::vector<gathered_record>& records) {
@@ -130,12 +141,17 @@ private:
 /// happened rethrows the original exception), pdd::decoupling_error when repairs run out.
 /// finish() is then not called. MPI must be initialised with at least MPI_THREAD_FUNNELED and
 /// called from the thread that initialised it.
-/// Complexity: the kernel on every subdomain spread over the ranks; two messages per subdomain
-/// and one all-gather of the job records per round.
-template <DelaunayMesher M, MeshSink S>
+/// The subdomains of options.kept (a resumed run's intact pieces) are not meshed in the first
+/// round. With a `reporter` (pdd::mpi::resumable_piece_sink), reporter.report(id) runs on the
+/// rank that delivered subdomain id, right after its sink.consume, and its bytes reach
+/// reporter.recorded(id, bytes) on rank 0's calling thread as the piece completes (all of them
+/// before finish(); when recorded throws, every rank throws its exception after the round).
+/// Complexity: the kernel on every subdomain spread over the ranks; three messages per
+/// subdomain and one all-gather of the job records per round.
+template <DelaunayMesher M, MeshSink S, class R = detail::no_reports>
 distributed_meshing_statistics mesh_subdomains(MPI_Comm comm, decoupled_decomposition& dd,
                                                const meshing_options& options, const M& mesher,
-                                               unsigned threads, S& sink) {
+                                               unsigned threads, S& sink, R&& reporter = R{}) {
   const detail::private_comm own(comm);
   int size = 0;
   detail::check(MPI_Comm_size(own.get(), &size), "MPI_Comm_size");
@@ -148,9 +164,9 @@ distributed_meshing_statistics mesh_subdomains(MPI_Comm comm, decoupled_decompos
   stats.subdomain_rank.assign(n, -1);
   stats.ranks.resize(static_cast<std::size_t>(size));
   start_sink(sink, static_cast<index_t>(n));
-  detail::meshing_rank<M, S> rank(own.get(), dd, options, mesher, sink, threads);
-  std::vector<index_t> ids(n);
-  std::iota(ids.begin(), ids.end(), index_t{0});
+  detail::meshing_rank<M, S, std::remove_reference_t<R>> rank(own.get(), dd, options, mesher, sink,
+                                                              threads, reporter);
+  std::vector<index_t> ids = detail::first_round(n, options.kept);
   for (;;) {
     const std::vector<detail::gathered_record> records = rank.round(ids, work);
     if (const detail::gathered_record* f = detail::first_failure(records)) {

@@ -9,6 +9,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/meshing/meshing_statistics.hpp>
+#include <pdd/mpi/collectively.hpp>
 #include <pdd/mpi/detail/dispatcher.hpp>
 #include <pdd/mpi/detail/wire.hpp>
 
@@ -19,6 +20,8 @@
 #include <exception>
 #include <map>
 #include <string>
+#include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -44,18 +47,27 @@ struct gathered_record {
   wire_error failure;
 };
 
+/// The reporter of a pdd::mpi::mesh_subdomains whose master records nothing.
+struct no_reports {
+  std::string report(index_t) const { return {}; }
+  void recorded(index_t, std::string_view) const {}
+};
+
 /// One rank's side of pdd::mpi::mesh_subdomains: meshes the subdomains the dispatcher hands it
-/// (pdd::mesh_subdomain), delivers the good ones to its own sink and records every job.
-template <DelaunayMesher M, MeshSink S>
+/// (pdd::mesh_subdomain), delivers the good ones to its own sink, records every job, and
+/// passes each delivered piece's reporter.report(id) to reporter.recorded(id, bytes) on the
+/// master as it completes.
+template <DelaunayMesher M, MeshSink S, class R = no_reports>
 class meshing_rank {
 public:
   meshing_rank(MPI_Comm comm, const decoupled_decomposition& dd, const meshing_options& options,
-               const M& mesher, S& sink, unsigned threads)
-      : comm_(comm), dd_(dd), options_(options), mesher_(mesher), sink_(sink),
+               const M& mesher, S& sink, unsigned threads, R& reporter)
+      : comm_(comm), dd_(dd), options_(options), mesher_(mesher), sink_(sink), reporter_(reporter),
         dispatcher_(comm, threads) {}
 
   /// Meshes the subdomains `ids` over all ranks (collective, the same ids everywhere) and
-  /// returns every job's record, in the order of ids, on every rank.
+  /// returns every job's record, in the order of ids, on every rank. \throws on every rank
+  /// when the master's reporter.recorded threw (the master's exception).
   std::vector<gathered_record> round(const std::vector<index_t>& ids,
                                      const std::vector<double>& all_work) {
     ids_ = ids;
@@ -63,8 +75,18 @@ public:
     std::vector<double> work(ids.size());
     for (std::size_t j = 0; j < ids.size(); ++j)
       work[j] = all_work[ids[j]];
-    auto job = [this](index_t j) { mesh_one(j); };
-    dispatcher_.run(work, job);
+    auto job = [this](index_t j) { return mesh_one(j); };
+    std::exception_ptr failure; // the master's: recorded() threw
+    auto done = [&](index_t j, std::string_view bytes) {
+      if (bytes.empty() || failure) return;
+      try {
+        reporter_.recorded(ids_[j], bytes);
+      } catch (...) {
+        failure = std::current_exception();
+      }
+    };
+    dispatcher_.run(work, job, done);
+    if constexpr (!std::is_same_v<R, no_reports>) rethrow_first_failure(comm_, failure);
     return gather();
   }
 
@@ -76,25 +98,31 @@ public:
   }
 
 private:
-  /// Job j of the round: subdomain ids_[j]. Never throws (records the exception).
-  void mesh_one(index_t j) {
+  /// Job j of the round: subdomain ids_[j]; returns the reporter's report of its delivered
+  /// piece (empty when it was not delivered). Never throws (records the exception).
+  std::string mesh_one(index_t j) {
     job_record& rec = records_[j];
     rec.here = true;
     const index_t s = ids_[j];
     const auto t0 = std::chrono::steady_clock::now();
+    std::string report;
     try {
       subdomain_meshing r = mesh_subdomain(dd_, s, options_, mesher_);
       rec.seconds = r.seconds;
       rec.split_pieces = r.split_pieces.size();
       rec.split_path_edges = std::move(r.split_path_edges);
-      if (!rec.split_path_edges.empty()) return;
-      rec.vertices = r.mesh.vertices.size();
-      rec.triangles = r.mesh.triangles.size();
-      deliver(s, std::move(r.mesh));
+      if (rec.split_path_edges.empty()) {
+        rec.vertices = r.mesh.vertices.size();
+        rec.triangles = r.mesh.triangles.size();
+        deliver(s, std::move(r.mesh));
+        report = reporter_.report(s);
+      }
     } catch (...) {
       rec.failure = std::current_exception();
+      report.clear();
     }
     rec.job_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return report;
   }
 
   /// The sink's consume; its exceptions become pdd::meshing_error(s, ...) as in
@@ -156,6 +184,7 @@ private:
   const meshing_options& options_;
   const M& mesher_;
   S& sink_;
+  R& reporter_;
   dispatcher dispatcher_;
   std::vector<index_t> ids_;
   std::vector<job_record> records_; // by position in ids_; slot j written by job j only
