@@ -81,18 +81,5 @@ exe="$build/examples/drivers/pdd-mesh"
 echo "plan: $("$build/examples/drivers/pdd-mesh" "$dir/faulted.poly" --max-area "$area" \
   --threads 2 --stats "$dir/plan.json" -q >/dev/null &&
   python3 -c "import json,sys; print(json.load(open(sys.argv[1]))['plan_reason'])" "$dir/plan.json")"
-a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
-for rep in 1 2; do
-  for kernel in ${KERNELS:-cgal native}; do # pdd-mesh's kernels (--kernel)
-    for t in 2 1; do
-      pdd_timed "$out" "$exe" "$dir/faulted.poly" "pdd-mesh --kernel $kernel, automatic" "$rep" "$t" \
-        --max-area "$area" --kernel "$kernel"
-    done
-  done
-  pdd_timed "$out" "$exe" "$dir/faulted.poly" "pdd-mesh --subdomains 1" "$rep" 1 --max-area "$area" \
-    --subdomains 1
-  if [ -n "$triangle" ]; then # (Triangle's switches take no exponent)
-    triangle_timed "$out" "$triangle" "$dir/faulted.poly" "$rep" "pq20.7a$a"
-  fi
-done
+side_by_side_runs "$out" "$exe" "$dir/faulted.poly" "$area" "$triangle"
 side_by_side_table "$out"

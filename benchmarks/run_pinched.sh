@@ -99,18 +99,5 @@ source "$(dirname "$0")/side_by_side.sh"
 out=benchmarks/results/pinched$([ "$cracks" = 1 ] && echo -cracks || true).jsonl
 side_by_side_begin "$out" "bash benchmarks/run_pinched.sh $*"
 exe="$build/examples/drivers/pdd-mesh"
-a=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
-for rep in 1 2; do
-  for kernel in ${KERNELS:-cgal native}; do # pdd-mesh's kernels (--kernel)
-    for t in 2 1; do
-      pdd_timed "$out" "$exe" "$dir/lake.poly" "pdd-mesh --kernel $kernel, automatic" "$rep" "$t" \
-        --max-area "$area" --kernel "$kernel"
-    done
-  done
-  pdd_timed "$out" "$exe" "$dir/lake.poly" "pdd-mesh --subdomains 1" "$rep" 1 --max-area "$area" \
-    --subdomains 1
-  if [ -n "$triangle" ]; then # (Triangle's switches take no exponent)
-    triangle_timed "$out" "$triangle" "$dir/lake.poly" "$rep" "pq20.7a$a"
-  fi
-done
+side_by_side_runs "$out" "$exe" "$dir/lake.poly" "$area" "$triangle"
 side_by_side_table "$out"

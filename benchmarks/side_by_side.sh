@@ -8,6 +8,7 @@
 #   side_by_side_begin OUT.jsonl "COMMAND"           raw data file, its first line the provenance
 #   pdd_timed OUT.jsonl EXE POLY LABEL REP THREADS [pdd-mesh options...]
 #   triangle_timed OUT.jsonl EXE POLY REP SWITCHES   (SWITCHES without Q, N, E, P)
+#   side_by_side_runs OUT.jsonl EXE POLY AREA [TRIANGLE_EXE]   the standard runs of one input
 #   side_by_side_table OUT.jsonl                     the Markdown table, from the raw data only
 source "$(dirname "${BASH_SOURCE[0]}")/provenance.sh"
 
@@ -55,6 +56,26 @@ triangle_timed() { # OUT EXE POLY REP SWITCHES
   "$exe" -"$switches"NEP "$tmp/in.poly" | sed -n 's/^ *Mesh triangles: *//p' >"$tmp/count"
   side_by_side_record "$out" "Triangle 1.6 -$switches" "$rep" 1 "$tmp/time" "$(cat "$tmp/count")"
   rm -rf "$tmp"
+}
+
+# The standard runs of one input, REPS (default 2) times: pdd-mesh's automatic plan with each of
+# KERNELS (default "cgal native") on 2 threads and on 1, pdd-mesh --subdomains 1 (the default
+# kernel: the domain meshed whole), and Triangle -pq20.7a<AREA> when TRIANGLE_EXE is given.
+side_by_side_runs() { # OUT EXE POLY AREA [TRIANGLE_EXE]
+  local out=$1 exe=$2 poly=$3 area=$4 triangle=${5:-} rep kernel threads decimal
+  # Triangle's -a takes no exponent
+  decimal=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" "$area")
+  for rep in $(seq "${REPS:-2}"); do
+    for kernel in ${KERNELS:-cgal native}; do
+      for threads in 2 1; do
+        pdd_timed "$out" "$exe" "$poly" "pdd-mesh --kernel $kernel, automatic" "$rep" "$threads" \
+          --max-area "$area" --kernel "$kernel"
+      done
+    done
+    pdd_timed "$out" "$exe" "$poly" "pdd-mesh --subdomains 1" "$rep" 1 --max-area "$area" \
+      --subdomains 1
+    if [ -n "$triangle" ]; then triangle_timed "$out" "$triangle" "$poly" "$rep" "pq20.7a$decimal"; fi
+  done
 }
 
 side_by_side_table() { # OUT
