@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "same_files.hpp"
 #include "test_files.hpp"
 #include "test_support.hpp"
 
@@ -22,6 +23,8 @@
 
 namespace resume_test {
 namespace fs = std::filesystem;
+using pdd::test::expect_same_files;
+using pdd::test::read_json;
 
 namespace {
 
@@ -39,23 +42,6 @@ pdd::test::command_result pdd_mesh(const std::string& poly, const std::string& a
 /// The per-subdomain options of a run into dir in `format`.
 std::string into(const fs::path& dir, const std::string& format) {
   return "--format " + format + " --output-per-subdomain '" + dir.string() + "'";
-}
-
-/// Every file of `a` and `b` (names and bytes) is the same; returns the number compared.
-std::size_t expect_same_files(const fs::path& a, const fs::path& b, const std::string& what) {
-  const std::vector<std::string> names = pdd::test::dir_entries(a);
-  EXPECT_EQ(pdd::test::dir_entries(b), names) << what;
-  std::size_t same = 0;
-  for (const std::string& name : names) {
-    const bool equal = pdd::test::read_text(a / name) == pdd::test::read_text(b / name);
-    EXPECT_TRUE(equal) << what << ": " << name << " differs";
-    same += equal;
-  }
-  return same;
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  return nlohmann::json::parse(pdd::test::read_text(p));
 }
 
 } // namespace

@@ -4,6 +4,7 @@
 // whose launcher is killed with SIGKILL at fixed-seed moments, then resumed, equals a clean
 // run; a changed option is refused naming it; a non-empty directory is refused without
 // --resume or --overwrite. ctest sets OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM).
+#include "same_files.hpp"
 #include "test_files.hpp"
 
 #include <pdd/io/piece_files.hpp>
@@ -22,6 +23,8 @@
 namespace mpi_resume_test {
 
 namespace fs = std::filesystem;
+using pdd::test::expect_same_files;
+using pdd::test::read_json;
 using pdd::test::run_command;
 
 const fs::path pipe_poly = fs::path(PDD_SOURCE_DIR) / "examples" / "data" / "pipe.poly";
@@ -68,24 +71,6 @@ std::string killed_job(int ranks, const std::string& options, const fs::path& ou
   for (const char c : script)
     single_quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return run_command("sh -c " + single_quoted + "'").output;
-}
-
-/// Every file of `a` and `b` (names and bytes, the manifest included) is the same; returns the
-/// number of files compared.
-std::size_t expect_same_files(const fs::path& a, const fs::path& b, const std::string& what) {
-  const std::vector<std::string> names = pdd::test::dir_entries(a);
-  EXPECT_EQ(pdd::test::dir_entries(b), names) << what;
-  std::size_t same = 0;
-  for (const std::string& name : names) {
-    const bool equal = pdd::test::read_text(a / name) == pdd::test::read_text(b / name);
-    EXPECT_TRUE(equal) << what << ": " << name << " differs";
-    same += equal;
-  }
-  return same;
-}
-
-nlohmann::json read_json(const fs::path& p) {
-  return nlohmann::json::parse(pdd::test::read_text(p));
 }
 
 /// The meshings of all ranks in a --stats file.

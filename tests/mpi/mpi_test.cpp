@@ -5,6 +5,7 @@
 // ctest sets OMPI_ALLOW_RUN_AS_ROOT(_CONFIRM) (CI runs as root); PDD_MPIEXEC_FLAGS holds
 // --oversubscribe for Open MPI (P > cores here).
 #include "general_domains.hpp"
+#include "same_files.hpp"
 #include "test_files.hpp"
 
 #include <pdd/io/poly.hpp>
@@ -20,6 +21,7 @@
 namespace {
 
 namespace fs = std::filesystem;
+using pdd::test::expect_same_files;
 using pdd::test::run_command;
 
 std::string mpiexec(int ranks) {
@@ -58,23 +60,6 @@ fs::path threaded_output(const mesh_case& c, const std::string& name) {
                              " --stats " + shell_quoted(dir / "stats.json"));
   EXPECT_EQ(r.code, 0) << r.output;
   return done[key] = dir;
-}
-
-/// Expects the same file names with the same bytes in a and b, the manifest included unless
-/// `manifest` is false (the library's plain piece_directory_sink writes none); returns the number
-/// of files.
-std::size_t expect_same_files(const fs::path& a, const fs::path& b, const std::string& what,
-                              bool manifest = true) {
-  std::vector<std::string> names = pdd::test::dir_entries(a);
-  if (!manifest) std::erase(names, std::string("pdd-manifest.json"));
-  EXPECT_EQ(names, pdd::test::dir_entries(b)) << what;
-  std::size_t same = 0;
-  for (const std::string& n : names) {
-    const bool equal = pdd::test::read_text(a / n) == pdd::test::read_text(b / n);
-    EXPECT_TRUE(equal) << what << ": " << n << " differs";
-    same += equal;
-  }
-  return same;
 }
 
 /// pdd-verify on the output folder `out` of case c: every piece and every interface.

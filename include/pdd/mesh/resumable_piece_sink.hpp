@@ -6,22 +6,31 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/io/manifest_book.hpp>
 #include <pdd/io/piece_files.hpp>
 #include <pdd/io/piece_manifest.hpp>
 #include <pdd/mesh/sinks.hpp>
 
-#include <algorithm>
-#include <chrono>
 #include <cstddef>
 #include <filesystem>
-#include <functional>
-#include <map>
 #include <mutex>
-#include <string>
 #include <utility>
 #include <vector>
 
 namespace pdd {
+
+/// Writes piece `id` through `files` and reads it back: its record for the manifest (file,
+/// size, checksum: pdd::piece_checksum) with its triangle and vertex counts.
+/// \throws pdd::error when writing or reading fails.
+inline piece_record write_piece_and_checksum(piece_directory_sink& files, index_t id,
+                                             triangle_mesh&& mesh) {
+  const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
+  files.consume(id, std::move(mesh));
+  piece_record r = piece_checksum(files.directory() / piece_file_name(id, files.format()));
+  r.triangles = triangles;
+  r.vertices = vertices;
+  return r;
+}
 
 /// A MeshSink over a piece_directory_sink that records every piece it writes in a manifest
 /// (its size and checksum, pdd::piece_checksum, read back from the file) and saves the
@@ -39,91 +48,52 @@ namespace pdd {
 class resumable_piece_sink {
 public:
   static constexpr bool retains_meshes = false;
-  using save_function = std::function<void(const piece_manifest&)>;
+  using save_function = manifest_book::save_function;
+  static constexpr int save_spacing = manifest_book::save_spacing;
 
   /// \throws as piece_directory_sink's constructor.
   resumable_piece_sink(std::filesystem::path directory, piece_format format,
                        piece_manifest manifest, save_function save)
-      : files_(std::move(directory), format), manifest_(std::move(manifest)),
-        save_(std::move(save)) {
-    for (const auto& [id, record] : manifest_.pieces)
-      kept_.push_back(id);
-  }
+      : files_(std::move(directory), format), book_(std::move(manifest), std::move(save)) {}
 
   void start(index_t n) {
     const std::lock_guard lock(mutex_);
-    std::erase_if(kept_, [n](index_t id) { return id >= n; });
-    std::erase_if(manifest_.pieces, [n](const auto& p) { return p.first >= n; });
+    book_.start(n);
     files_.start(n);
   }
 
-  /// Writes the piece, checksums it and saves the manifest with it.
+  /// Writes the piece, checksums it and saves the manifest with it (manifest_book::record).
   /// \throws pdd::error when writing or saving fails.
   void consume(index_t id, triangle_mesh&& mesh) {
-    const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
-    files_.consume(id, std::move(mesh));
-    piece_record r = piece_checksum(files_.directory() / piece_file_name(id, files_.format()));
-    r.triangles = triangles;
-    r.vertices = vertices;
+    piece_record r = write_piece_and_checksum(files_, id, std::move(mesh));
     const std::lock_guard lock(mutex_);
-    std::erase(kept_, id);
-    manifest_.pieces[id] = std::move(r);
-    const auto before = std::chrono::steady_clock::now();
-    if (before < next_save_) return; // a later piece's save, or finish(), records this one
-    save_(manifest_);
-    const auto after = std::chrono::steady_clock::now();
-    next_save_ = after + save_spacing * (after - before);
+    book_.record(id, std::move(r));
   }
 
-  /// After a save that took t, the next one waits for a piece finishing save_spacing * t later:
-  /// the manifest (O(N) bytes) costs at most about 1 / save_spacing of the run instead of
-  /// O(N^2) bytes in all; the pieces of the last few saves' time may be meshed again on resume.
-  static constexpr int save_spacing = 20;
-
-  /// Writes the index over the kept and delivered pieces and saves the manifest.
-  void finish() {
-    std::vector<std::string> names;
-    for (const auto& [id, record] : manifest_.pieces)
-      names.push_back(record.file);
-    save_(manifest_);
-    write_piece_index(files_.index_path(), names, files_.format());
-  }
+  /// Saves the manifest and writes the index over the kept and delivered pieces.
+  void finish() { book_.finish(files_.index_path(), files_.format()); }
 
   /// Removes the pieces this sink has written (not the kept ones) and forgets them in the
   /// manifest, which is saved (best effort, for a failed run).
   void remove_written() {
     files_.remove_written();
     const std::lock_guard lock(mutex_);
-    std::erase_if(manifest_.pieces, [this](const auto& p) {
-      return std::find(kept_.begin(), kept_.end(), p.first) == kept_.end();
-    });
-    try {
-      save_(manifest_);
-    } catch (const error&) { // best effort: the manifest lists pieces that are gone
-    }
+    book_.forget_recorded();
   }
 
   /// The ids of the pieces kept from an earlier run (not delivered by this one), sorted.
-  const std::vector<index_t>& kept() const noexcept { return kept_; }
+  const std::vector<index_t>& kept() const noexcept { return book_.kept(); }
   /// The pieces this sink has written.
-  std::size_t meshed() const noexcept { return manifest_.pieces.size() - kept_.size(); }
+  std::size_t meshed() const noexcept { return book_.meshed(); }
   /// Triangles over the kept and the written pieces.
-  std::size_t triangles() const noexcept {
-    std::size_t n = 0;
-    for (const auto& [id, record] : manifest_.pieces)
-      n += record.triangles;
-    return n;
-  }
-  const piece_manifest& manifest() const noexcept { return manifest_; }
+  std::size_t triangles() const noexcept { return book_.triangles(); }
+  const piece_manifest& manifest() const noexcept { return book_.manifest(); }
   std::filesystem::path index_path() const { return files_.index_path(); }
 
 private:
   piece_directory_sink files_;
-  piece_manifest manifest_;
-  save_function save_;
-  std::vector<index_t> kept_;
+  manifest_book book_;
   std::mutex mutex_;
-  std::chrono::steady_clock::time_point next_save_{}; ///< consume() saves from then on
 };
 static_assert(MeshSink<resumable_piece_sink>);
 

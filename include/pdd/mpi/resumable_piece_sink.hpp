@@ -7,19 +7,18 @@
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/io/manifest_book.hpp>
 #include <pdd/io/piece_files.hpp>
 #include <pdd/io/piece_manifest.hpp>
+#include <pdd/mesh/resumable_piece_sink.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mpi/detail/wire.hpp>
 
 #include <mpi.h>
 
-#include <algorithm>
-#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <map>
 #include <mutex>
 #include <string>
@@ -45,34 +44,26 @@ namespace pdd::mpi {
 class resumable_piece_sink {
 public:
   static constexpr bool retains_meshes = false;
-  using save_function = std::function<void(const piece_manifest&)>;
+  using save_function = manifest_book::save_function;
   /// After a save that took t, the next one waits for a piece reported save_spacing * t later.
-  static constexpr int save_spacing = 20;
+  static constexpr int save_spacing = manifest_book::save_spacing;
 
   /// \throws as pdd::piece_directory_sink's constructor.
   resumable_piece_sink(MPI_Comm comm, std::filesystem::path directory, piece_format format,
                        piece_manifest manifest, save_function save)
-      : files_(std::move(directory), format), manifest_(std::move(manifest)),
-        save_(std::move(save)) {
+      : files_(std::move(directory), format), book_(std::move(manifest), std::move(save)) {
     detail::check(MPI_Comm_rank(comm, &rank_), "MPI_Comm_rank");
-    for (const auto& [id, record] : manifest_.pieces)
-      kept_.push_back(id);
   }
 
   /// Every rank; rank 0 forgets kept pieces with ids from n.
   void start(index_t n) {
-    std::erase_if(kept_, [n](index_t id) { return id >= n; });
-    std::erase_if(manifest_.pieces, [n](const auto& p) { return p.first >= n; });
+    book_.start(n);
     files_.start(n);
   }
 
   /// Writes the piece and checksums it. \throws pdd::error when writing or reading fails.
   void consume(index_t id, triangle_mesh&& mesh) {
-    const std::size_t triangles = mesh.triangles.size(), vertices = mesh.vertices.size();
-    files_.consume(id, std::move(mesh));
-    piece_record r = piece_checksum(files_.directory() / piece_file_name(id, files_.format()));
-    r.triangles = triangles;
-    r.vertices = vertices;
+    piece_record r = write_piece_and_checksum(files_, id, std::move(mesh));
     const std::lock_guard lock(mutex_);
     written_[id] = std::move(r);
   }
@@ -101,12 +92,7 @@ public:
     r.checksum = in.get<std::uint64_t>();
     r.triangles = static_cast<std::size_t>(in.get<std::uint64_t>());
     r.vertices = static_cast<std::size_t>(in.get<std::uint64_t>());
-    add(id, std::move(r));
-    const auto before = std::chrono::steady_clock::now();
-    if (before < next_save_) return; // a later piece's save, or finish(), records this one
-    save_(manifest_);
-    const auto after = std::chrono::steady_clock::now();
-    next_save_ = after + save_spacing * (after - before);
+    book_.record(id, std::move(r));
   }
 
   /// Rank 0 (every rank calls it once all have succeeded): records its own pieces not recorded
@@ -114,56 +100,32 @@ public:
   void finish() {
     if (rank_ != 0) return;
     for (auto& [id, record] : written_)
-      if (!manifest_.pieces.contains(id) || std::ranges::count(kept_, id) > 0) add(id, record);
-    std::vector<std::string> names;
-    for (const auto& [id, record] : manifest_.pieces)
-      names.push_back(record.file);
-    save_(manifest_);
-    write_piece_index(files_.index_path(), names, files_.format());
+      if (!book_.recorded_here(id)) book_.add(id, record);
+    book_.finish(files_.index_path(), files_.format());
   }
 
   /// Every rank after a failed run: removes the pieces this rank has written; rank 0 also
   /// forgets in the manifest the pieces not kept and saves it (best effort).
   void remove_written() {
     files_.remove_written();
-    if (rank_ != 0) return;
-    std::erase_if(manifest_.pieces, [this](const auto& p) {
-      return std::find(kept_.begin(), kept_.end(), p.first) == kept_.end();
-    });
-    try {
-      save_(manifest_);
-    } catch (const error&) { // best effort: the manifest lists pieces that are gone
-    }
+    if (rank_ == 0) book_.forget_recorded();
   }
 
   /// Rank 0: the ids of the pieces kept from an earlier run (not delivered by this one), sorted.
-  const std::vector<index_t>& kept() const noexcept { return kept_; }
+  const std::vector<index_t>& kept() const noexcept { return book_.kept(); }
   /// Rank 0: the pieces of this run in the manifest.
-  std::size_t meshed() const noexcept { return manifest_.pieces.size() - kept_.size(); }
+  std::size_t meshed() const noexcept { return book_.meshed(); }
   /// Rank 0: triangles over the kept and the recorded pieces.
-  std::size_t triangles() const noexcept {
-    std::size_t n = 0;
-    for (const auto& [id, record] : manifest_.pieces)
-      n += record.triangles;
-    return n;
-  }
-  const piece_manifest& manifest() const noexcept { return manifest_; }
+  std::size_t triangles() const noexcept { return book_.triangles(); }
+  const piece_manifest& manifest() const noexcept { return book_.manifest(); }
   std::filesystem::path index_path() const { return files_.index_path(); }
 
 private:
-  void add(index_t id, piece_record r) {
-    std::erase(kept_, id);
-    manifest_.pieces[id] = std::move(r);
-  }
-
   pdd::piece_directory_sink files_;
-  piece_manifest manifest_;
-  save_function save_;
-  std::vector<index_t> kept_;
+  manifest_book book_;
   std::map<index_t, piece_record> written_; ///< this rank's pieces
   std::mutex mutex_;
   int rank_ = 0;
-  std::chrono::steady_clock::time_point next_save_{}; ///< recorded() saves from then on
 };
 static_assert(MeshSink<resumable_piece_sink>);
 
