@@ -55,18 +55,22 @@ pdd::test::command_result threaded(const std::string& options, const fs::path& o
                      options + " --output-per-subdomain " + quoted(out));
 }
 
-/// The job of mpi_command started in a session of its own, its launcher (mpiexec) killed with
-/// SIGKILL after `seconds`; then its ranks are given 10 s to end by themselves, and are killed
-/// (by the session's id) if they have not, so that nothing writes into `out` afterwards.
-/// Returns the shell's report ("ranks outlived the launcher" when they had to be killed).
-std::string killed_job(int ranks, const std::string& options, const fs::path& out, double seconds) {
+/// The job of mpi_command started in a session of its own, its launcher (mpiexec), or with
+/// `one_rank` the last-started of its pdd-mesh-mpi ranks, killed with SIGKILL after `seconds`;
+/// then the job is given 10 s to end by itself, and is killed (by the session's id) if it has
+/// not, so that nothing writes into `out` afterwards. Returns the shell's report ("the job
+/// outlived the kill" when it had to be killed).
+std::string killed_job(int ranks, const std::string& options, const fs::path& out, double seconds,
+                       bool one_rank = false) {
   char sleep[64];
   std::snprintf(sleep, sizeof sleep, "sleep %.3f; ", seconds);
+  const std::string victim =
+      one_rank ? "$(pgrep -s $p -f pdd-mesh-mpi | tail -n 1)" : std::string("$p");
   const std::string script = "setsid " + mpi_command(ranks, options, out) +
-                             " >/dev/null 2>&1 & p=$!; " + sleep +
-                             "kill -KILL $p; for i in $(seq 100); do pgrep -s $p >/dev/null || "
-                             "exit 0; sleep 0.1; done; pkill -KILL -s $p; echo ranks outlived "
-                             "the launcher";
+                             " >/dev/null 2>&1 & p=$!; " + sleep + "kill -KILL " + victim +
+                             "; for i in $(seq 100); do pgrep -s $p >/dev/null || "
+                             "exit 0; sleep 0.1; done; pkill -KILL -s $p; echo the job outlived "
+                             "the kill";
   std::string single_quoted = "'";
   for (const char c : script)
     single_quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -172,6 +176,38 @@ TEST(MpiResume, AJobWhoseLauncherIsKilledResumesToACleanRun) {
   }
   EXPECT_GT(kept, 0u) << "no killed job left a piece to keep";
   EXPECT_GT(meshed, 0u) << "no killed job was interrupted";
+}
+
+// One rank (a pdd-mesh-mpi process, not the launcher) killed with SIGKILL at 2 fixed-seed moments
+// between 30 and 70 % of a clean run's wall time: the job ends (Open MPI aborts it), and
+// --resume on 3 ranks gives the clean run's directory; some kill interrupted the job.
+TEST(MpiResume, AJobWithOneRankKilledResumesToACleanRun) {
+  const fs::path root = pdd::test::fresh_dir("mpi_resume_rank_killed");
+  const std::string options = "--max-area 2e-6 --subdomains 32";
+  const fs::path clean = root / "clean";
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(mpi(3, options, clean).code, 0);
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - t0;
+  std::mt19937 random(41);
+  std::uniform_real_distribution<double> moment(0.3 * wall.count(), 0.7 * wall.count());
+  std::size_t meshed = 0;
+  for (int run = 0; run < 2; ++run) {
+    const fs::path out = root / ("run" + std::to_string(run));
+    const fs::path stats = root / ("run" + std::to_string(run) + ".json");
+    const double t = moment(random);
+    const std::string report = killed_job(3, options, out, t, true);
+    const std::string what = "one rank killed at " + std::to_string(t) + " s " + report;
+    const auto r = mpi(3, options + " --resume --stats " + quoted(stats), out);
+    ASSERT_EQ(r.code, 0) << what << ":\n" << r.output;
+    EXPECT_EQ(expect_same_files(clean, out, what), 32u + 2u) << what;
+    const nlohmann::json j = read_json(stats);
+    EXPECT_EQ(j["pieces_kept"].get<std::size_t>() + j["pieces_meshed"].get<std::size_t>(), 32u);
+    meshed += j["pieces_meshed"].get<std::size_t>();
+    std::printf("%s: %zu pieces kept on resume\n", what.c_str(),
+                j["pieces_kept"].get<std::size_t>());
+    fs::remove_all(out);
+  }
+  EXPECT_GT(meshed, 0u) << "no job was interrupted by the kill";
 }
 
 // A resume with another --max-area is refused (exit 1) naming the option, reported once (rank
