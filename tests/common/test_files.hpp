@@ -115,4 +115,32 @@ inline triangle_mesh small_mesh() {
   return m;
 }
 
+/// A tmpfs of `size` (e.g. "1m") mounted on `dir` for the test's lifetime: a full disk. Needs
+/// root; mounted() is false where it cannot be mounted (the test then skips).
+class small_file_system {
+public:
+  small_file_system(const std::filesystem::path& dir, const char* size) : dir_(dir) {
+    std::filesystem::create_directories(dir);
+    mounted_ = std::system(("mount -t tmpfs -o size=" + std::string(size) + " tmpfs '" +
+                            dir.string() + "' 2>/dev/null")
+                               .c_str()) == 0;
+  }
+  ~small_file_system() {
+    if (mounted_) (void)std::system(("umount '" + dir_.string() + "'").c_str());
+  }
+  small_file_system(const small_file_system&) = delete;
+  small_file_system& operator=(const small_file_system&) = delete;
+  bool mounted() const { return mounted_; }
+  /// Remounts it with `size` (space freed, the files kept); true when that worked.
+  bool resize(const char* size) {
+    return mounted_ && std::system(("mount -o remount,size=" + std::string(size) + " '" +
+                                    dir_.string() + "' 2>/dev/null")
+                                       .c_str()) == 0;
+  }
+
+private:
+  std::filesystem::path dir_;
+  bool mounted_ = false;
+};
+
 } // namespace pdd::test

@@ -41,23 +41,6 @@ std::vector<std::string> visible_files(const fs::path& dir) {
 
 /// A tmpfs of `size` mounted at dir, unmounted on destruction; mounted() is false where the
 /// test may not mount (not root, no mount namespace rights).
-class small_file_system {
-public:
-  small_file_system(const fs::path& dir, const char* size) : dir_(dir) {
-    fs::create_directories(dir);
-    mounted_ = std::system(("mount -t tmpfs -o size=" + std::string(size) + " tmpfs '" +
-                            dir.string() + "' 2>/dev/null")
-                               .c_str()) == 0;
-  }
-  ~small_file_system() {
-    if (mounted_) (void)std::system(("umount '" + dir_.string() + "'").c_str());
-  }
-  bool mounted() const { return mounted_; }
-
-private:
-  fs::path dir_;
-  bool mounted_ = false;
-};
 
 } // namespace
 
@@ -117,7 +100,7 @@ TEST(DurableOutput, AKilledPerSubdomainRunLeavesCompletePiecesAndNoIndex) {
 
 TEST(DurableOutput, AFullFileSystemIsBadInputAndLeavesNothing) {
   const fs::path dir = pdd::test::temp_path("full_fs");
-  small_file_system full(dir, "1m");
+  pdd::test::small_file_system full(dir, "1m");
   if (!full.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (not root)";
   for (const std::string& args :
        {std::string("--subdomains 16 --no-disk-check --output-per-subdomain '") +

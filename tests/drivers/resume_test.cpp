@@ -204,4 +204,28 @@ TEST(Resume, TheDiskCheckCountsThePiecesKept) {
   EXPECT_EQ(resumed.code, 0) << resumed.output;
 }
 
+// A full disk (a 256 KiB tmpfs, --no-disk-check) fails the run with exit 1 and leaves no piece (the
+// durable-output rule); once there is space (the tmpfs remounted at 64 MiB), --resume finishes and
+// the directory equals a clean run's, every file (the pipe at 1e-4 in 8 pieces, both formats).
+TEST(Resume, AfterAFullDiskResumeFinishesAsACleanRun) {
+  const fs::path root = pdd::test::fresh_dir("full_disk");
+  const fs::path disk = pdd::test::temp_path("resume_full_disk");
+  pdd::test::small_file_system full(disk, "256k");
+  if (!full.mounted()) GTEST_SKIP() << "cannot mount a tmpfs here (not root)";
+  const std::string options = "--max-area 1e-4 --subdomains 8 --no-disk-check ";
+  for (const std::string format : {"vtu", "binary"}) {
+    const fs::path clean = root / format, out = disk / format;
+    ASSERT_EQ(pdd_mesh(pipe_poly, options + into(clean, format)).code, 0);
+    const auto failed = pdd_mesh(pipe_poly, options + into(out, format));
+    EXPECT_EQ(failed.code, 1) << failed.output;
+    EXPECT_NE(failed.output.find("No space left on device"), std::string::npos) << failed.output;
+    ASSERT_TRUE(full.resize("64m"));
+    const auto r = pdd_mesh(pipe_poly, options + "--resume " + into(out, format));
+    ASSERT_EQ(r.code, 0) << format << ": " << r.output;
+    EXPECT_EQ(expect_same_files(clean, out, format + " after a full disk"), 8u + 2u);
+    fs::remove_all(out);
+    ASSERT_TRUE(full.resize("256k"));
+  }
+}
+
 } // namespace resume_test
