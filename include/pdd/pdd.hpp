@@ -6,7 +6,7 @@
 ///
 /// Layering: a module includes only modules on lower levels and only its own detail/. The
 /// levels are in one table, in include/pdd/README.md; tests/layering/check_layering.py reads
-/// it and checks every #include.
+/// it and checks every `#include`.
 #pragma once
 
 // level 0: core, errors

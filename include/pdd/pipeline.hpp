@@ -129,7 +129,7 @@ public:
 
   /// Stage 3 (pdd::mesh_stage): meshes every subdomain (runs decouple() first if needed) and
   /// delivers the meshes to `sink` (see pdd::mesh_subdomains; N == 1: the whole domain as
-  /// subdomain 0). \throws pdd::limit_error (check_memory<S>), pdd::meshing_error with the
+  /// subdomain 0). \throws pdd::limit_error (`check_memory<S>()`), pdd::meshing_error with the
   /// subdomain id, pdd::decoupling_error when invariance repairs run out.
   template <MeshSink S>
   const generate_statistics& mesh(S& sink) {

@@ -22,7 +22,7 @@ namespace pdd {
 /// entity carries its marker as its one physical tag, so meshio's "gmsh:physical" cell data is
 /// the subdomain for triangles and the boundary marker for lines. `$Nodes`: one block (dim 2,
 /// surface 1), node tag = vertex index + 1. `$Elements`: triangles (type 2) grouped by surface,
-/// tag = triangle index + 1; boundary lines (type 1) grouped by curve, tag = #triangles +
+/// tag = triangle index + 1; boundary lines (type 1) grouped by curve, tag = the triangle count +
 /// segment index + 1. Coordinates are written in shortest round-trip form, z = 0.
 /// With `region_attributes` (one per triangle: pdd::region_attributes) the surfaces group the
 /// triangles by attribute instead, and each surface's physical tag is its attribute (so

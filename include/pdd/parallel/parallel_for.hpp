@@ -7,7 +7,7 @@
 /// its task types carried the lambdas' types, which inside templates (a sizing field's lambda,
 /// a test's lambda, a job of the executor) run to thousands of characters; ThreadSanitizer's
 /// symbolizer then overflowed its buffer ("Symbolizer buffer too small") and a race report's
-/// frames came out as <null>. One indirect call per range costs nothing measurable.
+/// frames came out as `<null>`. One indirect call per range costs nothing measurable.
 ///
 /// Nothing here speaks to ThreadSanitizer: the tsan preset links a libtbb built with
 /// -fsanitize=thread (scripts/build-tsan-tbb.sh), which shows TBB's own fork, join and
