@@ -7,7 +7,9 @@
 # libopenmpi-dev and openmpi-bin (mpiexec) build and test the MPI backend (pdd-mesh-mpi).
 # help2man writes the programs' man pages from their --help (cmake/PddManPages.cmake).
 # python3-pip and python3-venv: `pip install .` and its check (scripts/check-pip-install.sh).
-# mkdocs and doxygen build the documentation site (the docs target, cmake/PddDocs.cmake).
+# mkdocs and doxygen build the documentation site (the docs target, cmake/PddDocs.cmake);
+# librsvg2-bin (rsvg-convert) is for the graded tutorial's example, which CI runs with every
+# other example of the docs (scripts/run_doc_examples.py).
 # .ci/run checks before each stage that its tools are here (its require function), and
 # scripts/fresh-machine-check.sh proves on a new Debian 12 root that this list is complete.
 #
@@ -19,7 +21,7 @@ set -euo pipefail
 packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtbb-dev libmetis-dev
           libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev python3-meshio
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
-          python3-pip python3-venv mkdocs doxygen
+          python3-pip python3-venv mkdocs doxygen librsvg2-bin
           clang libclang-rt-14-dev llvm-14 libopenmpi-dev openmpi-bin help2man)
 missing=()
 for p in "${packages[@]}"; do
