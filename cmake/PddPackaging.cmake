@@ -18,6 +18,9 @@ with its CMake package (find_package(pdd)), the man pages and the pdd Python mod
 pdd's own code is MIT; the programs and the module link CGAL's GPLv3+ packages (2D \
 Triangulation, Mesh_2), so the binaries are covered by the GPL (README.md, Licence).")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
+# Debian's machine-readable copyright file (what is MIT, what is GPL-3+ and why), where Debian
+# policy wants it: /usr/share/doc/pdd/copyright.
+install(FILES ${PROJECT_SOURCE_DIR}/cmake/debian/copyright DESTINATION ${CMAKE_INSTALL_DOCDIR})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT) # pdd_0.1.0_amd64.deb
 set(CPACK_DEBIAN_PACKAGE_SECTION science)

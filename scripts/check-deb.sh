@@ -23,7 +23,7 @@ files=$(dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./|/|')
 
 expected=(/usr/include/pdd/pdd.hpp /usr/include/pdd/version.hpp
           /usr/lib/cmake/pdd/pddConfig.cmake /usr/lib/cmake/pdd/pddConfigVersion.cmake
-          /usr/lib/cmake/pdd/pddTargets.cmake)
+          /usr/lib/cmake/pdd/pddTargets.cmake /usr/share/doc/pdd/copyright)
 # the programs (examples/drivers/pdd_<name>.cpp, pdd-mesh-mpi with MPI) and their man pages
 programs=()
 if [ "$(cache PDD_BUILD_DRIVERS)" = ON ]; then
