@@ -20,10 +20,13 @@ public:
 /// Malformed input file: what() reads "file:line: what was expected".
 class input_error : public error {
 public:
+  /// An error at 1-based line `line` of `file`; what() is "file:line: message".
   input_error(std::string file, std::size_t line, const std::string& message)
       : error(file + ":" + std::to_string(line) + ": " + message), file_(std::move(file)),
         line_(line) {}
+  /// The path of the malformed file, as given to the reader.
   const std::string& file() const noexcept { return file_; }
+  /// The 1-based line of the file where the input went wrong.
   std::size_t line() const noexcept { return line_; }
 
 private:
@@ -35,8 +38,11 @@ private:
 /// vertices, segments, holes or loops as the message says.
 class geometry_error : public error {
 public:
+  /// An error with what() = `message`, naming the offending items `ids` (empty: none named).
   explicit geometry_error(const std::string& message, std::vector<std::size_t> ids = {})
       : error(message), ids_(std::move(ids)) {}
+  /// The indices of the offending vertices, segments, holes or loops (which kind: the
+  /// message says); empty when the error names none.
   const std::vector<std::size_t>& ids() const noexcept { return ids_; }
 
 private:
@@ -58,9 +64,12 @@ public:
 /// The meshing kernel failed on a subdomain; subdomain() says which (-1: whole domain).
 class meshing_error : public error {
 public:
+  /// A failure on subdomain `subdomain` (-1: the whole domain); what() is "subdomain s:
+  /// message", or `message` alone for -1.
   meshing_error(long long subdomain, const std::string& message)
       : error(subdomain < 0 ? message : "subdomain " + std::to_string(subdomain) + ": " + message),
         subdomain_(subdomain) {}
+  /// The subdomain the kernel failed on; -1 for the whole domain (no decomposition).
   long long subdomain() const noexcept { return subdomain_; }
 
 private:
@@ -75,6 +84,7 @@ private:
 /// that add the subdomain keep the type (pdd::rethrow_for_subdomain).
 class unresolvable_input_error : public meshing_error {
 public:
+  /// As meshing_error(subdomain, message): `subdomain` -1 for the whole domain.
   using meshing_error::meshing_error;
 };
 
@@ -99,8 +109,11 @@ public:
 /// whose minimum over a region cannot be bounded away from 0.
 class sizing_error : public error {
 public:
+  /// An error with what() = `message`; `column` the 1-based column of a bad expression token,
+  /// 0 (the default) when the error is not about an expression's text.
   explicit sizing_error(const std::string& message, std::size_t column = 0)
       : error(message), column_(column) {}
+  /// The 1-based column of the expression token that does not parse; 0: not a parse error.
   std::size_t column() const noexcept { return column_; }
 
 private:

@@ -27,6 +27,8 @@ struct generate_result {
   /// One conforming Delaunay mesh of the domain; triangle markers are subdomain ids (0 when
   /// N == 1); segments are the mesh edges on input segments with their markers.
   triangle_mesh mesh;
+  /// What the run took: subdomain and triangle counts, times per phase, the decoupling's
+  /// conditions (see generate_statistics).
   generate_statistics statistics;
 };
 

@@ -73,6 +73,7 @@ public:
 
   /// N, the number of subdomains this pipeline uses.
   std::size_t subdomains() const noexcept { return stats_.subdomains; }
+  /// The options the pipeline runs with, as given (checked by check_generate_options).
   const generate_options& options() const noexcept { return options_; }
   /// The domain as read (Triangle's rule where it is not one of closed loops).
   const pslg& domain() const noexcept { return run_.domain; }
@@ -189,12 +190,15 @@ public:
 
   /// The statistics so far.
   const generate_statistics& statistics() const noexcept { return stats_; }
+  /// The statistics so far, for a caller that runs a stage elsewhere (e.g. meshes the
+  /// subdomains over MPI ranks) to record what it did.
   generate_statistics& statistics() noexcept { return stats_; }
   /// The decoupled decomposition (after decouple(); may be changed before mesh()).
   decoupled_decomposition& decoupled() noexcept {
     PDD_ASSERT(decoupled_);
     return state_->path;
   }
+  /// The executor the stages run on: E{options().threads} when E takes a thread count, else E{}.
   const E& executor() const noexcept { return executor_; }
 
 private:

@@ -29,10 +29,12 @@ namespace pdd {
 
 /// Vertex property of a partition_graph: its weight (an area in MADD), >= 0.
 struct partition_vertex {
+  /// The vertex's weight, >= 0 (0: weightless, the default).
   double weight = 0.0;
 };
 /// Edge property of a partition_graph: its weight (a separator length in MADD), >= 0.
 struct partition_edge {
+  /// The edge's weight, the cost of cutting it, >= 0 (0: free to cut, the default).
   double weight = 0.0;
 };
 

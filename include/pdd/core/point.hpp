@@ -12,8 +12,11 @@ namespace pdd {
 
 /// A point in the plane. Ordered lexicographically (x, then y); equality is exact.
 struct point {
+  /// Abscissa, in the input's units.
   double x = 0.0;
+  /// Ordinate, in the input's units.
   double y = 0.0;
+  /// Lexicographic order (x first, then y) and exact equality, as std::tuple's.
   friend constexpr auto operator<=>(const point&, const point&) = default;
 };
 

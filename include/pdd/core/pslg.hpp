@@ -12,14 +12,20 @@ namespace pdd {
 
 /// A segment between two vertices of a pslg, with Triangle's boundary marker.
 struct segment {
+  /// First end: an index in pslg::vertices.
   index_t a = 0;
+  /// Second end: an index in pslg::vertices.
   index_t b = 0;
+  /// Triangle's boundary marker, carried to the mesh edges on the segment (mesh_edge::marker);
+  /// 0: none.
   int marker = 0;
 };
 
 /// A regional attribute / area constraint (Triangle's .poly regional attributes section).
 struct region {
+  /// A point inside the region: the region is the face of the arrangement that holds it.
   point p;
+  /// Triangle's regional attribute, given to the region's triangles.
   double attribute = 0.0;
   double max_area = -1.0; ///< negative: no constraint
 };
@@ -42,6 +48,7 @@ enum class domain_rule : unsigned char {
 /// internal constraints, dangling segments), hole points and regions; `rule` says which faces
 /// are the domain. Plain value type; see validate().
 struct pslg {
+  /// The vertices; segments refer to them by index.
   std::vector<point> vertices;
   std::vector<int> vertex_markers; ///< same size as vertices
   /// Triangle's vertex attributes (the .poly/.node `<#attributes>` columns): this many per
@@ -50,9 +57,14 @@ struct pslg {
   /// density weight; the rest of pdd carries them unchanged. add_vertex leaves them alone:
   /// keep the two in step when both are used.
   std::size_t vertex_attribute_count = 0;
+  /// vertex_attribute_count values per vertex (see vertex_attribute_count); empty when it is 0.
   std::vector<double> vertex_attributes;
+  /// The segments: closed loops, internal constraints, dangling segments.
   std::vector<segment> segments;
+  /// Hole points: the face holding each one (and the faces reached from it without crossing a
+  /// segment) is not part of the domain.
   std::vector<point> holes;
+  /// Regional attributes and area constraints (Triangle's -A and -a).
   std::vector<region> regions;
   /// Which faces are the domain (see domain_rule; pdd's pipeline sets triangle on its copy of a
   /// user's domain that needs it).

@@ -10,8 +10,10 @@ namespace pdd {
 
 /// A flood_levels visitor that does nothing (the default).
 struct no_level_visitor {
+  /// Called when the flood meets a constrained edge with an unlabelled neighbour; ignores it.
   template <class Face>
   void constraint(Face, int) const noexcept {}
+  /// Called right after a face gets its level; ignores it.
   template <class Face>
   void labelled(Face, Face, int) const noexcept {}
 };

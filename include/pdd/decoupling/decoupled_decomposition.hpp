@@ -22,8 +22,10 @@ namespace pdd {
 struct path_edge {
   index_t u = no_index; ///< pool vertex: the lexicographically smaller endpoint
   index_t v = no_index; ///< pool vertex: the lexicographically larger endpoint
+  /// The interface whose chain holds the edge, an index in decomposition::interfaces.
   index_t interface_id = no_index;
   std::array<index_t, 2> sides{no_index, no_index}; ///< the two subdomains, smaller id first
+  /// The edge's length |uv|, in input units.
   double length = 0.0;
   double k = 0.0;              ///< the k it is split with: the global k, halved by each repair
   index_t pieces = 1;          ///< nu: the number of pieces (nu - 1 split points)
@@ -68,6 +70,7 @@ struct decoupled_decomposition {
     return n;
   }
 
+  /// N, the number of subdomains (parts.subdomains.size()).
   std::size_t num_subdomains() const noexcept { return parts.subdomains.size(); }
 
   /// The number of split points currently on the path (vertices added to the separators).

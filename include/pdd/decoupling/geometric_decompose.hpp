@@ -56,6 +56,7 @@ struct geometric_decompose_options {
 
 /// One round of the loop.
 struct geometric_round {
+  /// N of the round's decomposition.
   std::size_t subdomains = 0;
   std::size_t features = 0;      ///< tiny-feature vertices the decomposition was graded towards
   double slope = 0.0;            ///< the driver's slope (0: the initial decomposition)
@@ -66,8 +67,11 @@ struct geometric_round {
 
 /// The loop's result: the chosen round's decomposition and F, and every round.
 struct geometric_decomposition {
+  /// The chosen round's decomposition.
   decomposition parts;
+  /// Algorithm 8.3 on `parts`: F's per-subdomain values (g_i, scales, expected triangles).
   geometric_sizing_result sizing;
+  /// Every round run, in order (rounds[0]: the given decomposition); at most max_rounds.
   std::vector<geometric_round> rounds;
   std::size_t chosen = 0; ///< index in rounds of the decomposition returned
   std::size_t cap = 0;    ///< the cap on subdomains the refined rounds ran under
@@ -121,6 +125,9 @@ public:
     }
     return best;
   }
+  /// Bounds over the closed box b: min(max_area, f)'s range, and per feature the driver's
+  /// bound at the nearest (lo) and farthest (hi) point of the box from it (see the class
+  /// comment).
   sizing_bounds range(const bbox& b) const {
     sizing_bounds r = data_->base.range(b);
     r = {std::min(r.lo, data_->max_area), std::min(r.hi, data_->max_area)};
@@ -135,6 +142,7 @@ public:
     }
     return r;
   }
+  /// "feature_driven": the field's name in reports (any_sizing::kind, min_sizing::kind).
   static constexpr const char* kind() noexcept { return "feature_driven"; }
 
 private:

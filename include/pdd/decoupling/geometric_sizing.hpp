@@ -55,6 +55,8 @@ struct geometric_sizing_result {
       s += e;
     return s;
   }
+  /// Expected triangles under F: the sum of expected_f[i] / scale(i), the integral of
+  /// 1 / (0.656 F).
   double expected_triangles_F() const {
     double s = 0.0;
     for (std::size_t i = 0; i < g.size(); ++i)

@@ -26,6 +26,8 @@ namespace pdd {
 
 /// The graded decoupling path and its parameters.
 struct graded_decoupling {
+  /// The decomposition with its decoupling path: each path edge split with the smaller k_i of
+  /// its two sides; path.k the smallest k_i.
   decoupled_decomposition path;
   /// k_i = min(lfs_min(D_i), sqrt 3 L_i / 4, (1/2) sqrt(m(D_i) / sqrt 2)) per subdomain
   /// (Proposition 20 with Theorem 15's terms, pdd::separator_term; L_i the shortest separator

@@ -15,9 +15,13 @@ namespace pdd {
 /// One sector of the domain at a vertex: turning counter-clockwise from the segment to vertex
 /// `from` to the segment to vertex `to` (from == to: the one sector of a dangling end, 360 deg).
 struct domain_angle {
+  /// The PSLG vertex at the sector's apex.
   index_t vertex = no_index;
+  /// The sector's angle in degrees, in (0, 360]; 360 for a dangling end.
   double angle_deg = 360.0;
+  /// The vertex at the other end of the segment the sector starts from (counter-clockwise).
   index_t from = no_index;
+  /// The vertex at the other end of the segment the sector ends at; == from at a dangling end.
   index_t to = no_index;
 };
 

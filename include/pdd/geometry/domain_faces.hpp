@@ -20,12 +20,19 @@ namespace pdd {
 /// the face it lies in (a dense id of the arrangement's faces, the same for every triangle of
 /// one face; deterministic for a given PSLG).
 struct domain_triangle {
+  /// The triangle's PSLG vertex ids, counter-clockwise.
   std::array<index_t, 3> vertices;
+  /// The face of the arrangement the triangle lies in (dense ids from 0, deterministic).
   index_t face;
 };
 
 /// Where a point lies relative to the domain's faces.
 struct face_location {
+  /// \enum kind
+  /// inside a face of the domain, on its boundary (a segment or vertex), or outside it (in a
+  /// hole or outside every loop).
+  /// \var where
+  /// Where the point lies; outside by default.
   enum class kind { inside, on_boundary, outside } where = kind::outside;
   index_t face = no_index; ///< the face (as domain_triangle::face) when where == inside
 };

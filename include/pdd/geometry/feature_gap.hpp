@@ -21,13 +21,23 @@ namespace pdd {
 /// the two segments share when they meet there at a domain-side angle below 60 deg
 /// (no_index otherwise).
 struct feature_pair {
+  /// \var first
+  /// One of the two features (a vertex or a segment of the PSLG).
+  /// \var second
+  /// The other feature; when the gap comes through a vertex's own gap, that vertex's nearest
+  /// non-incident feature.
   pslg_feature first, second;
+  /// The vertex shared by two segments meeting at a domain-side angle below 60 deg (the gap
+  /// across their wedge); no_index otherwise.
   index_t apex = no_index;
 };
 
 /// The feature gap at a point and the features that give it.
 struct gap_sample {
+  /// The feature gap at the point, in input units (0 at the apex of a small angle; infinity
+  /// when no two separated features are near).
   double gap = std::numeric_limits<double>::infinity();
+  /// The two features that give `gap` (meaningless while gap is infinity).
   feature_pair pair;
 };
 

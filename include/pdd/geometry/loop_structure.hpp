@@ -35,6 +35,8 @@ struct polygon_loop {
 
 /// All loops of a PSLG, in the order of their smallest vertex id.
 struct loop_structure {
+  /// Every closed loop of the PSLG, with its orientation and nesting, in the order of its
+  /// smallest vertex id; polygon_loop::parent indexes this vector.
   std::vector<polygon_loop> loops;
 };
 

@@ -26,6 +26,8 @@ namespace pdd {
 /// atomically (pdd::write_file_atomically). Not thread-safe: its owner serialises the calls.
 class manifest_book {
 public:
+  /// What saves the manifest: called with the manifest, must write it atomically
+  /// (pdd::write_file_atomically); a failure throws pdd::error.
   using save_function = std::function<void(const piece_manifest&)>;
   /// After a save that took t, the next one waits for a piece finishing save_spacing * t
   /// later: the manifest (O(N) bytes) costs at most about 1 / save_spacing of the run instead
@@ -103,6 +105,8 @@ public:
       n += record.triangles;
     return n;
   }
+  /// The manifest as it stands: the kept pieces and those recorded so far, with the fingerprint
+  /// it was constructed with.
   const piece_manifest& manifest() const noexcept { return manifest_; }
 
 private:

@@ -37,13 +37,21 @@ struct piece_record {
   std::string file;           ///< its file name in the directory (piece_file_name)
   std::uintmax_t size = 0;    ///< bytes
   std::uint64_t checksum = 0; ///< CRC-64/XZ of its bytes (piece_checksum)
+  /// \var triangles
+  /// The number of triangles of the piece's mesh.
+  /// \var vertices
+  /// The number of vertices of the piece's mesh (its interface vertices counted too).
   std::size_t triangles = 0, vertices = 0;
+  /// Memberwise equality (file, size, checksum and counts).
   friend bool operator==(const piece_record&, const piece_record&) = default;
 };
 
 /// A per-subdomain output's manifest: the run's fingerprint and its finished pieces by id.
 struct piece_manifest {
+  /// The fingerprint of the run that wrote the pieces: a resumed run keeps them only when its
+  /// own is equal (pdd::fingerprint_differences).
   run_fingerprint fingerprint;
+  /// The finished pieces, by subdomain id (ascending); empty: none finished yet.
   std::map<index_t, piece_record> pieces;
 };
 

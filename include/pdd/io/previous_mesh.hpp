@@ -18,7 +18,10 @@ namespace pdd {
 /// segments of a .poly read with it), its triangles, and per triangle an optional attribute and
 /// an optional area bound (Triangle's .area: <= 0 means none).
 struct previous_mesh {
+  /// The mesh's vertices (with their markers and attributes) and, when a .poly was read, the
+  /// rest of it (segments, holes, regions); no segments otherwise.
   pslg input;
+  /// The triangles, as indices in input.vertices (0-based, whatever the files' first id).
   std::vector<std::array<index_t, 3>> triangles;
   std::vector<double> triangle_attributes; ///< empty, or one per triangle
   std::vector<double> triangle_areas;      ///< empty, or one per triangle

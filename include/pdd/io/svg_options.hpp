@@ -9,6 +9,14 @@ namespace pdd {
 
 /// A window of the model plane, x0 < x1 and y0 < y1.
 struct svg_window {
+  /// \var x0
+  /// Left edge, in model coordinates.
+  /// \var y0
+  /// Bottom edge, in model coordinates.
+  /// \var x1
+  /// Right edge, in model coordinates (> x0).
+  /// \var y1
+  /// Top edge, in model coordinates (> y0).
   double x0 = 0.0, y0 = 0.0, x1 = 0.0, y1 = 0.0;
 };
 

@@ -19,10 +19,17 @@ struct decomposition_check_options {
 
 /// The findings of validate_decomposition.
 struct decomposition_report {
+  /// One message per violation found, at most decomposition_check_options::max_problems;
+  /// empty: the decomposition passed.
   std::vector<std::string> problems;
+  /// pdd::domain_area of the input PSLG.
   double domain_area = 0.0;
+  /// The subdomains' areas added up (must match domain_area within area_tolerance).
   double area_sum = 0.0;
+  /// Smallest angle (degrees) a separator forms with the boundary or another separator; 180
+  /// when there is no separator.
   double min_separator_angle_deg = 180.0;
+  /// True when no problem was found.
   bool ok() const noexcept { return problems.empty(); }
   /// The problems, one per line ("ok" when there are none).
   std::string summary() const {

@@ -10,18 +10,24 @@ namespace pdd {
 
 /// Measurements of one decomposition (dissertation 5.2's quantities).
 struct decomposition_statistics {
+  /// N, the number of subdomains made.
   std::size_t subdomains = 0;
   /// Smallest angle formed by a separator with the boundary or with another separator
   /// (degrees; 180 when there is no separator).
   double min_separator_angle_deg = 180.0;
+  /// Total length of the separators (every interface edge once), in input units.
   double separator_length_total = 0.0;
   /// Per subdomain: the length of its interface edges.
   std::vector<double> separator_length_per_subdomain;
+  /// Largest subdomain area over the mean subdomain area (1: perfectly balanced; 0 when the
+  /// mean is 0).
   double max_area_over_mean = 0.0;
+  /// Smallest subdomain area over the mean subdomain area (0 when the mean is 0).
   double min_area_over_mean = 0.0;
   /// Shortest interface edge divided by sqrt(mean subdomain area) (the "small segments" of
   /// 4.2; 0 when there is no interface).
   double min_interface_edge_rel = 0.0;
+  /// Wall-clock seconds of the decomposition (pdd::decompose, the splits and the assembly).
   double time_s = 0.0;
   std::size_t splits = 0;          ///< successful 2-way splits
   std::size_t rounds = 0;          ///< rounds of concurrent splits
@@ -38,6 +44,8 @@ struct decomposition_statistics {
   std::size_t chord_splits = 0;
   /// Larger child area / parent area: mean and maximum over the splits.
   double mean_split_fraction = 0.0;
+  /// The maximum over the splits of larger child area / parent area (0.5: an even split; 0
+  /// when there was no split).
   double max_split_fraction = 0.0;
   /// splits_per_level[l]: successful splits that used refinement level l (r 2^l).
   std::vector<std::size_t> splits_per_level;

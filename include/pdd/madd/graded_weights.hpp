@@ -234,6 +234,7 @@ public:
   std::vector<double> operator()(std::span<const madd_leaf_view> leaves) const {
     return detail::weigh_leaves(leaves, [this](const madd_leaf_view& l) { return leaf_weight(l); });
   }
+  /// The number of weighted points.
   std::size_t size() const noexcept { return d_->points.size(); }
 
 private:
@@ -301,7 +302,9 @@ madd_split_policy area_ratio_policy(F required_area, double max_ratio = 1.0) {
 /// The subdomains of a decomposition as the leaves a split policy sees (for reporting the
 /// weights or area ratios of the final subdomains). The views point into `points`.
 struct decomposition_leaves {
+  /// points[s][l]: the points of loop l of subdomain s (as decomposition::subdomains[s].loops).
   std::vector<std::vector<std::vector<point>>> points;
+  /// One leaf view per subdomain, in subdomain order, each pointing into `points`.
   std::vector<madd_leaf_view> views;
 };
 

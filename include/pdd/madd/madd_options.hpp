@@ -42,6 +42,8 @@ struct madd_options {
   double max_subdomain_area = std::numeric_limits<double>::infinity();
   /// r: the refinement factor (4.1), > 0; see madd_refinement_scale.
   double refinement_factor = 4.0;
+  /// How the refinement length h of a split is chosen from r: per subdomain (the default) or
+  /// globally as the dissertation's static MADD (4.1).
   madd_refinement_scale refinement_scale = madd_refinement_scale::subdomain;
   /// Dynamic MADD (4.1): a split that finds no separator is retried with the boundary
   /// refined for r, 2r, 4r, ...: at most this many levels (>= 1).

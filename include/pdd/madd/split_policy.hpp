@@ -17,7 +17,10 @@ namespace pdd {
 /// that share an edge store bitwise-identical endpoints, so neighbours are found from their
 /// shared edges; the view is valid only during the call.
 struct madd_leaf_view {
+  /// The leaf's loops as points: loops[0] the outer loop (counter-clockwise), loops[1..] the
+  /// holes (clockwise); each span valid only during the call.
   std::vector<std::span<const point>> loops;
+  /// The leaf's area (outer loop less its holes), in squared input units.
   double area = 0.0;
 };
 

@@ -35,6 +35,7 @@ inline triangle_mesh merge_meshes(std::vector<triangle_mesh>&& parts, unsigned t
 /// Thread-safety: consume() may run concurrently; the rest from one thread.
 class merge_sink {
 public:
+  /// True: every subdomain mesh stays in memory until finish() merges them (see MeshSink).
   static constexpr bool retains_meshes = true;
 
   /// \param threads threads of the merge at finish() (0: all cores, 1: sequential).

@@ -9,7 +9,9 @@ namespace pdd {
 
 /// Quality statistics of a triangle mesh.
 struct mesh_statistics {
+  /// The number of triangles measured (0: an empty mesh, every other field 0).
   std::size_t triangles = 0;
+  /// The number of vertices of the mesh.
   std::size_t vertices = 0;
   double min_angle_deg = 0.0; ///< smallest triangle angle (0 for an empty mesh)
   double max_angle_deg = 0.0; ///< largest triangle angle

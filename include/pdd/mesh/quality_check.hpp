@@ -91,11 +91,16 @@ void check_quality(const triangle_mesh& m, const pslg& domain, const mesh_criter
 template <MeshSink Inner, SizingField S = uniform_sizing>
 class quality_check_sink {
 public:
+  /// The inner sink's: this decorator keeps no mesh itself.
   static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
 
+  /// Checks every mesh against `criteria` (angle bound, area bound) and `sizing`, with the
+  /// quality exemptions of `domain` (found here, once); meshes that pass go to `inner`.
+  /// \throws geometry_error as validate() for an invalid `domain`.
   quality_check_sink(Inner& inner, const pslg& domain, mesh_criteria criteria, S sizing = {})
       : inner_(inner), exemptions_(domain), criteria_(criteria), sizing_(std::move(sizing)) {}
 
+  /// Passes start(n) on to the inner sink when it has one.
   void start(index_t n) {
     if constexpr (requires { inner_.start(n); }) inner_.start(n);
   }
@@ -105,6 +110,7 @@ public:
                                  sizing_, static_cast<long long>(id));
     inner_.consume(id, std::move(mesh));
   }
+  /// Calls the inner sink's finish() (not reached once a consume has thrown).
   void finish() { inner_.finish(); }
 
 private:

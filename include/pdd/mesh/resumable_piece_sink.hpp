@@ -47,8 +47,12 @@ inline piece_record write_piece_and_checksum(piece_directory_sink& files, index_
 /// Thread-safety: consume() may run concurrently; the rest from one thread.
 class resumable_piece_sink {
 public:
+  /// False: a piece is on disk, not in memory, once consume returns (see MeshSink).
   static constexpr bool retains_meshes = false;
+  /// What saves the manifest: called with the manifest, must write it atomically.
   using save_function = manifest_book::save_function;
+  /// The spacing of the manifest's saves during the run (manifest_book::save_spacing: after a
+  /// save that took t, the next waits for a piece finishing save_spacing * t later).
   static constexpr int save_spacing = manifest_book::save_spacing;
 
   /// \throws as piece_directory_sink's constructor.
@@ -56,6 +60,8 @@ public:
                        piece_manifest manifest, save_function save)
       : files_(std::move(directory), format), book_(std::move(manifest), std::move(save)) {}
 
+  /// Forgets the kept pieces with ids from n (a run of n subdomains) and reserves room for n
+  /// pieces' sizes.
   void start(index_t n) {
     const std::lock_guard lock(mutex_);
     book_.start(n);
@@ -87,7 +93,10 @@ public:
   std::size_t meshed() const noexcept { return book_.meshed(); }
   /// Triangles over the kept and the written pieces.
   std::size_t triangles() const noexcept { return book_.triangles(); }
+  /// The manifest as it stands: the kept pieces and those written so far, with the
+  /// fingerprint it was constructed with (what the last save wrote, or newer).
   const piece_manifest& manifest() const noexcept { return book_.manifest(); }
+  /// `<directory>/<index name of the format>`: where finish() writes the index.
   std::filesystem::path index_path() const { return files_.index_path(); }
 
 private:

@@ -19,8 +19,12 @@ namespace pdd {
 
 /// Sizes of one delivered subdomain mesh.
 struct piece_counts {
+  /// Whether the subdomain's mesh has arrived (consume was called for its id); the sizes are
+  /// 0 until it has.
   bool delivered = false;
+  /// Vertices of the subdomain's own mesh (its interface vertices counted here too).
   std::size_t vertices = 0;
+  /// Triangles of the subdomain's mesh.
   std::size_t triangles = 0;
   std::size_t segments = 0; ///< including interface pieces
 };
@@ -69,6 +73,7 @@ private:
 /// Thread-safety: consume() may run concurrently (different files); the rest from one thread.
 class piece_directory_sink {
 public:
+  /// False: a piece is on disk, not in memory, once consume returns (see MeshSink).
   static constexpr bool retains_meshes = false;
 
   /// Creates `directory` (and parents) if needed. An empty `index_name`: piece_index_name(f).
@@ -88,6 +93,7 @@ public:
     return piece_file_name(id, f);
   }
 
+  /// Reserves room for the sizes of n subdomains (MeshSink's optional start).
   void start(index_t n) { register_.start(n); }
   /// Writes the piece and records its sizes; the mesh is released on return.
   /// \throws pdd::error when writing fails.
@@ -114,10 +120,16 @@ public:
       }
   }
 
+  /// `<directory>/<index_name>`: where finish() writes (or has written) the index.
   std::filesystem::path index_path() const { return dir_ / index_name_; }
+  /// The directory the pieces and the index go to, as given to the constructor.
   const std::filesystem::path& directory() const noexcept { return dir_; }
+  /// The pieces' file format (vtu by default, or binary .pddm).
   piece_format format() const noexcept { return format_; }
+  /// The sizes of each subdomain's piece, by subdomain id (piece_counts::delivered false for a
+  /// piece not written yet); size: at least the n of start(n).
   const std::vector<piece_counts>& pieces() const noexcept { return register_.pieces(); }
+  /// Total triangles over the pieces written so far.
   std::size_t triangles() const noexcept { return register_.triangles(); }
 
 private:
@@ -135,17 +147,26 @@ using vtu_directory_sink = piece_directory_sink;
 /// Thread-safety: consume() may run concurrently; the rest from one thread.
 class counting_sink {
 public:
+  /// False: only sizes are kept (see MeshSink).
   static constexpr bool retains_meshes = false;
 
+  /// Reserves room for the sizes of n subdomains (MeshSink's optional start).
   void start(index_t n) { register_.start(n); }
+  /// Records the sizes of subdomain id's mesh and releases the mesh; a repeated id replaces
+  /// its sizes.
   void consume(index_t id, triangle_mesh&& mesh) {
     const triangle_mesh m = std::move(mesh);
     register_.record(id, m);
   }
+  /// Does nothing (the sizes are complete once the last consume has returned).
   void finish() {}
 
+  /// The sizes of each subdomain's mesh, by subdomain id (piece_counts::delivered false for a
+  /// mesh not received); size: at least the n of start(n).
   const std::vector<piece_counts>& pieces() const noexcept { return register_.pieces(); }
+  /// Total triangles over the meshes received.
   std::size_t triangles() const noexcept { return register_.triangles(); }
+  /// Total vertices summed over the meshes received (an interface vertex once per side).
   std::size_t vertices() const noexcept { return register_.vertices(); }
 
 private:

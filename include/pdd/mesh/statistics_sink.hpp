@@ -85,11 +85,15 @@ inline shielding_statistics shielding_statistics_of(const triangle_mesh& m,
 template <MeshSink Inner, SizingField S = uniform_sizing>
 class statistics_sink {
 public:
+  /// The inner sink's: this decorator keeps per-subdomain statistics, not meshes.
   static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
 
+  /// Measures every mesh against `sizing` (area ratios) and the small input angles of
+  /// `domain` (found here, once) before passing it on to `inner`.
   statistics_sink(Inner& inner, const pslg& domain, S sizing = {})
       : inner_(inner), angles_(find_small_input_angles(domain)), sizing_(std::move(sizing)) {}
 
+  /// Reserves room for n subdomains' statistics and passes start(n) on to the inner sink.
   void start(index_t n) {
     {
       const std::lock_guard lock(mutex_);

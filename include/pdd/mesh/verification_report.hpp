@@ -52,6 +52,8 @@ struct verification_report {
   double area_domain = 0.0; ///< pdd::domain_area of the PSLG
   double area_mesh = 0.0;   ///< sum of the triangle areas
   bool area_ok = false;     ///< areas agree within the relative tolerance
+  /// Descriptions of the first verify_options::max_reported violations, in the order above;
+  /// empty when ok().
   std::vector<std::string> messages;
 
   /// True if no violation was found and the areas agree.

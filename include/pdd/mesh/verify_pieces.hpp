@@ -29,12 +29,33 @@ namespace pdd {
 /// What verify_pieces() found. Counts are exact; `messages` describe the first max_reported
 /// problems, each naming its piece (file name), triangle index and coordinates.
 struct pieces_report {
+  /// \var pieces
+  /// The number of pieces the index lists (all were read).
+  /// \var triangles
+  /// Total triangles over the pieces.
+  /// \var vertices
+  /// Total vertices summed over the pieces (an interface vertex once per piece that has it).
   std::size_t pieces = 0, triangles = 0, vertices = 0;
+  /// Triangles of the largest piece (what one piece costs to hold in memory).
   std::size_t largest_piece_triangles = 0;
   std::size_t interface_edges = 0;       ///< boundary edges matched bitwise by another piece
   std::size_t domain_boundary_edges = 0; ///< unmatched boundary edges on an input segment
   std::size_t max_open_edges = 0;        ///< peak size of the table of unmatched edges
-  /// Violations inside the pieces (as pdd::verify counts them; piece boundary edges excepted).
+  /// \var orientation_violations
+  /// Clockwise, degenerate or malformed triangles, over all pieces (as pdd::verify counts them).
+  /// \var duplicate_vertices
+  /// Vertices at the coordinates of an earlier one in the same piece (as pdd::verify counts
+  /// them).
+  /// \var quality_violations
+  /// Triangles with an angle below the bound, over all pieces (quality-exempt ones excepted).
+  /// \var area_violations
+  /// Triangles larger than the area bound, over all pieces.
+  /// \var nonmanifold_edges
+  /// Edges in more than two triangles of a piece, or interior edges of a piece used twice in
+  /// the same direction (as pdd::verify counts them).
+
+  /// Violations inside the pieces (as pdd::verify counts them; piece boundary edges excepted):
+  /// interior edges that are not locally Delaunay.
   std::size_t delaunay_violations = 0, orientation_violations = 0, duplicate_vertices = 0,
               quality_violations = 0, area_violations = 0, nonmanifold_edges = 0;
   /// Interface edges whose two triangles run them in the same direction (overlap).
@@ -43,8 +64,15 @@ struct pieces_report {
   std::size_t interface_delaunay_violations = 0;
   /// Piece boundary edges on no input segment that no other piece has (bitwise).
   std::size_t unmatched_edges = 0;
+  /// \var area_domain
+  /// pdd::domain_area of the PSLG (read as verify_options::rule_as_given says).
+  /// \var area_mesh
+  /// Sum of the triangle areas over all pieces.
   double area_domain = 0.0, area_mesh = 0.0;
+  /// area_mesh and area_domain agree within verify_options::area_tolerance (relative).
   bool area_ok = false;
+  /// Descriptions of the first verify_options::max_reported problems, each prefixed with its
+  /// piece's file name; empty when ok().
   std::vector<std::string> messages;
 
   /// True if nothing was found and the total area matches the domain's.

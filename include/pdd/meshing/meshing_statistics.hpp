@@ -9,6 +9,7 @@ namespace pdd {
 
 /// What happened to one subdomain in pdd::mesh_subdomains.
 struct subdomain_report {
+  /// The subdomain's area, in squared input units.
   double area = 0.0;
   std::size_t vertices = 0;  ///< of its delivered mesh
   std::size_t triangles = 0; ///< of its delivered mesh
@@ -24,9 +25,12 @@ struct meshing_statistics {
   std::size_t shield_splits = 0;
   /// Subdomain meshings repeated by invariance repairs (0 unless interface_splits > 0).
   std::size_t remeshed_subdomains = 0;
+  /// Invariance repair rounds run (each halves k on the failing segments; at most
+  /// meshing_options::max_repairs).
   std::size_t repair_rounds = 0;
   std::vector<subdomain_report> subdomains; ///< by subdomain id
 
+  /// Triangles delivered, summed over the subdomains' reports.
   std::size_t triangles() const noexcept {
     std::size_t n = 0;
     for (const auto& s : subdomains)

@@ -43,7 +43,9 @@ namespace pdd::mpi {
 /// Thread-safety: consume() and report() may run concurrently; the rest from one thread.
 class resumable_piece_sink {
 public:
+  /// False: a piece is on disk, not in memory, once consume returns (see MeshSink).
   static constexpr bool retains_meshes = false;
+  /// What saves the manifest on rank 0: called with the manifest, must write it atomically.
   using save_function = manifest_book::save_function;
   /// After a save that took t, the next one waits for a piece reported save_spacing * t later.
   static constexpr int save_spacing = manifest_book::save_spacing;
@@ -117,7 +119,11 @@ public:
   std::size_t meshed() const noexcept { return book_.meshed(); }
   /// Rank 0: triangles over the kept and the recorded pieces.
   std::size_t triangles() const noexcept { return book_.triangles(); }
+  /// Rank 0: the manifest as it stands (the kept pieces and those recorded so far, with the
+  /// fingerprint it was constructed with); on other ranks, the one passed to the constructor.
   const piece_manifest& manifest() const noexcept { return book_.manifest(); }
+  /// `<directory>/<index name of the format>`: where rank 0's finish() writes the index (the
+  /// same path on every rank).
   std::filesystem::path index_path() const { return files_.index_path(); }
 
 private:

@@ -30,6 +30,7 @@ namespace pdd::mpi {
 /// Thread-safety: consume() may run concurrently (different files); the rest from one thread.
 class piece_directory_sink {
 public:
+  /// False: a piece is on disk, not in memory, once consume returns (see MeshSink).
   static constexpr bool retains_meshes = false;
 
   /// Creates `directory` if needed (every rank: the ranks share a file system). An empty
@@ -41,6 +42,7 @@ public:
     detail::check(MPI_Comm_rank(comm, &rank_), "MPI_Comm_rank");
   }
 
+  /// Every rank: takes note of the number of subdomains n, the pieces the index will list.
   void start(index_t n) {
     n_ = n;
     files_.start(n);
@@ -59,6 +61,8 @@ public:
   /// Removes the pieces this rank has written (best effort: the run has failed already).
   void remove_written() const { files_.remove_written(); }
 
+  /// `<directory>/<index_name>`: where rank 0's finish() writes the index (the same path on
+  /// every rank).
   std::filesystem::path index_path() const { return files_.index_path(); }
   /// The sizes of the pieces this rank wrote, by subdomain id.
   const std::vector<piece_counts>& pieces() const noexcept { return files_.pieces(); }

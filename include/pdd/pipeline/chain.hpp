@@ -45,11 +45,16 @@ namespace pdd {
 /// returned one), the decomposition, Algorithm 7.1's (or the geometric loop's) measurements, the
 /// field the path and the kernel use, and the decoupling path (after stage 2).
 struct run_state {
+  /// The plan in force: plan_run's, or the fallback's or retry's a stage returned.
   run_plan plan;
+  /// The decomposition into subdomains (after stage 1; one subdomain on the monolithic path).
   decomposition parts;
+  /// Algorithm 7.1's (or the geometric loop's) measurements on `parts`; default where neither
+  /// ran.
   gradation_report gradation;
   /// The user's field, or on the geometric path with geometric_mesh_field::algorithm_8_3 its F.
   any_sizing mesh_field;
+  /// The decoupling path over `parts` (after stage 2).
   decoupled_decomposition path;
 };
 

@@ -52,6 +52,7 @@ constexpr const char* path_name(mesh_path p) noexcept {
 /// What a run does, decided before any work (pdd::plan_run) and changed only by the plans that
 /// pdd::whole_domain_plan and pdd::geometric_retry_plan return.
 struct run_plan {
+  /// The path the run takes (monolithic by default: N = 1, the kernel on the whole domain).
   mesh_path path = mesh_path::monolithic;
   /// N asked of MADD (1: no decomposition). The geometric loop and Algorithm 7.1 may make more.
   std::size_t subdomains = 1;
@@ -68,6 +69,8 @@ struct run_plan {
   /// The geometric loop's cap on subdomains (pdd::detail::geometric_cap raises it to 4N) and
   /// whether this is the loop's second run (no third).
   std::size_t geometric_cap = 0;
+  /// True in the plan of the geometric loop's second run, with half the cap (made by
+  /// pdd::plan_after_path); a plan with it set is not retried again.
   bool geometric_retried = false;
   double area = 0.0;           ///< pdd::domain_area
   mesh_size_estimate estimate; ///< the triangles planned for (pdd::estimate_mesh_size)
@@ -83,8 +86,13 @@ struct run_plan {
 /// A domain read for a plan: validated, with Triangle's rule where it is not one of closed
 /// loops, and the regions MADD starts from (none when one subdomain is asked for).
 struct planned_run {
+  /// The user's domain, validated; with domain_rule::triangle where it is not one of closed
+  /// loops.
   pslg domain;
+  /// The regions MADD starts from (pdd::madd_start), found once; empty when the plan asks for
+  /// one subdomain.
   std::optional<madd_start> regions;
+  /// The plan for the domain (pdd::plan_run).
   run_plan plan;
 };
 

@@ -50,6 +50,9 @@ inline small_angle_apex_map small_angle_apexes(const pslg& domain) {
 /// for many meshes of one domain (every subdomain mesh of a run: finding the loops of a domain
 /// of 1,152 vertices for each of 267 subdomains cost more than meshing them).
 struct small_input_angles {
+  /// The vertices with a domain-side angle < 60 deg, keyed by their coordinates (x, y), each
+  /// with its sectors there (one on closed loops, several at a pinch vertex or where
+  /// constraints meet); empty when the domain has no small angle.
   detail::small_angle_apex_map apexes;
   double min_input_angle_deg = 360.0; ///< pdd::min_domain_angle_deg
 };
@@ -113,6 +116,7 @@ inline std::vector<char> find_shielded_triangles(const triangle_mesh& m, const p
 
 /// Statistics of the shielded triangles apart from the others (Theorem 24 (1), (7)).
 struct shielding_statistics {
+  /// The number of shielded triangles in the mesh (0 when the domain has no small angle).
   std::size_t shielded_triangles = 0;
   /// Smallest angle of the triangles that are not shielded (0 for none).
   double min_angle_unshielded_deg = 0.0;

@@ -18,8 +18,11 @@ inline constexpr int shield_marker = std::numeric_limits<int>::min() + 1;
 /// bc is the shield edge. It becomes one mesh element as it is: its angle at the apex is the
 /// input angle and its circumradius-to-shortest-edge ratio is 1 / (2 sin theta) (Theorem 24).
 struct shield_triangle {
+  /// The apex a: the vertex of the input angle theta < 60 deg.
   point apex;
+  /// The shield point on the first segment from the apex (counter-clockwise order apex, b, c).
   point b;
+  /// The shield point on the second segment from the apex, |ac| = |ab|.
   point c;
   int apex_marker = 0;     ///< the apex's vertex marker
   int marker_ab = 0;       ///< marker of the input segment through a and b

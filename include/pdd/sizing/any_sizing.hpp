@@ -25,6 +25,7 @@ public:
   any_sizing() = default;
   // area_at is checked before SizingField's copy_constructible, so that wrappers holding an
   // any_sizing (std::tuple's storage) do not make the constraint depend on itself
+  /// Holds a copy of `field` (any SizingField; implicit, so a field converts to any_sizing).
   template <class F>
   requires(!std::is_same_v<std::remove_cvref_t<F>, any_sizing> &&
            requires(const F& f, const point& p) { f.area_at(p); } && SizingField<F>)
@@ -33,9 +34,12 @@ public:
 
   /// True when a field is held.
   explicit operator bool() const noexcept { return impl_ != nullptr; }
+  /// The held field's area_at(p); infinity (no bound) when empty.
   double area_at(const point& p) const {
     return impl_ ? impl_->area_at(p) : std::numeric_limits<double>::infinity();
   }
+  /// Bounds of the held field over the closed box b (pdd::sizing_range with default options:
+  /// the field's own range, else the grid rule); {infinity, infinity} when empty.
   sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
   /// range with pdd::sizing_range's options for the held field.
   sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
@@ -43,6 +47,7 @@ public:
       return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     return impl_->range(b, o);
   }
+  /// The held field's name: its own kind(), "callable" when it has none, "none" when empty.
   std::string kind() const { return impl_ ? impl_->kind() : "none"; }
 
 private:

@@ -34,6 +34,8 @@ namespace pdd {
 /// covers. Thread-safety: const and shared; copies share the mesh.
 class background_mesh_sizing {
 public:
+  /// How `values` define F: per_vertex (one area bound per vertex, linear over each triangle)
+  /// or per_triangle (one per triangle, constant on it); see the class comment.
   enum class interpolation { per_vertex, per_triangle };
 
   /// \throws pdd::sizing_error naming the vertex or triangle: a vertex id out of range, a
@@ -51,6 +53,8 @@ public:
     data_->locator = detail::triangle_locator(std::move(vertices), std::move(triangles));
   }
 
+  /// F(p): interpolated in the background triangle that holds p (see the class comment);
+  /// infinity (no bound) outside every background triangle.
   double area_at(const point& p) const {
     const detail::triangle_locator& loc = data_->locator;
     const index_t t = loc.locate(p);
@@ -68,6 +72,8 @@ public:
     return std::clamp(v, std::min({va, vb, vc}), std::max({va, vb, vc}));
   }
 
+  /// Bounds of F over the closed box b from the values of the background triangles whose
+  /// bounding box meets b; {infinity, infinity} when none does (see the class comment).
   sizing_bounds range(const bbox& b) const {
     constexpr double inf = std::numeric_limits<double>::infinity();
     sizing_bounds r{inf, 0.0};
@@ -86,8 +92,11 @@ public:
     return r;
   }
 
+  /// "background_mesh": the field's name in reports (any_sizing::kind, min_sizing::kind).
   static constexpr const char* kind() noexcept { return "background_mesh"; }
+  /// How the values are interpolated, as given to the constructor.
   interpolation mode() const noexcept { return data_->mode; }
+  /// The number of background triangles.
   std::size_t num_triangles() const noexcept { return data_->locator.triangles().size(); }
 
 private:

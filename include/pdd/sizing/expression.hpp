@@ -46,7 +46,9 @@ public:
     return v;
   }
 
+  /// The expression as given to the constructor.
   const std::string& text() const noexcept { return state_->text; }
+  /// "expression": the field's name in reports (any_sizing::kind, min_sizing::kind).
   static constexpr const char* kind() noexcept { return "expression"; }
 
 private:

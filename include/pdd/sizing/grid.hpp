@@ -46,6 +46,8 @@ public:
                            "; it must be finite and > 0");
   }
 
+  /// F(p): the bilinear interpolation in the cell that holds p; infinity (no bound) outside
+  /// the grid.
   double area_at(const point& p) const {
     const data& d = *d_;
     const double u = (p.x - d.origin.x) / d.dx, v = (p.y - d.origin.y) / d.dy;
@@ -61,6 +63,9 @@ public:
     return std::clamp(r, lo, hi);
   }
 
+  /// {min, max} of the node values of the cells the closed box b meets (exact); hi is
+  /// infinity when b reaches outside the grid, and both are infinity for an empty box or one
+  /// that misses the grid.
   sizing_bounds range(const bbox& b) const {
     constexpr double inf = std::numeric_limits<double>::infinity();
     const data& d = *d_;
@@ -86,8 +91,11 @@ public:
     return r;
   }
 
+  /// "grid": the field's name in reports (any_sizing::kind, min_sizing::kind).
   static constexpr const char* kind() noexcept { return "grid"; }
+  /// The number of nodes along x (>= 2).
   std::size_t nx() const noexcept { return d_->nx; }
+  /// The number of nodes along y (>= 2).
   std::size_t ny() const noexcept { return d_->ny; }
 
 private:

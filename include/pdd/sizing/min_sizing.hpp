@@ -19,14 +19,19 @@ namespace pdd {
 /// \tparam Fs SizingFields. Thread-safe when they are.
 template <SizingField... Fs>
 requires(sizeof...(Fs) > 0) struct min_sizing {
+  /// The fields F_i whose minimum this is, in the order given.
   std::tuple<Fs...> fields;
 
+  /// The minimum of the fields `fs` (at least one).
   explicit min_sizing(Fs... fs) : fields(std::move(fs)...) {}
 
+  /// min_i F_i(p): the smallest area bound of the fields at p.
   double area_at(const point& p) const {
     return std::apply(
         [&](const auto&... f) { return std::min({static_cast<double>(f.area_at(p))...}); }, fields);
   }
+  /// {min_i lo_i, min_i hi_i} over the closed box b, each field's bounds from pdd::sizing_range
+  /// with default options.
   sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
   /// range with pdd::sizing_range's options for every field.
   sizing_bounds range(const bbox& b, const sizing_range_options& o) const {

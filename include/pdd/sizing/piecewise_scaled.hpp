@@ -51,12 +51,16 @@ public:
     data_->min_scale = scale.empty() ? 1.0 : *std::min_element(scale.begin(), scale.end());
   }
 
+  /// F(p) = min(max_area, f(p)) * the scale of the piece that holds p (the smallest scale
+  /// outside every triangle).
   double area_at(const point& p) const {
     double s = data_->located.area_at(p);
     if (!std::isfinite(s)) s = data_->min_scale;
     return base_at(p) * s;
   }
 
+  /// Bounds of F over the closed box b (see the class comment), the base field's bounds from
+  /// pdd::sizing_range with default options.
   sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
   /// range with pdd::sizing_range's options for the base field.
   sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
@@ -68,7 +72,10 @@ public:
     return {base.lo * s.lo, base.hi * std::max(s.hi, s.lo)};
   }
 
+  /// "geometric" (the field of the geometric graded method, Algorithm 8.3): its name in
+  /// reports (any_sizing::kind, min_sizing::kind).
   static constexpr const char* kind() noexcept { return "geometric"; }
+  /// The number of pieces D_i (the size of `scale` given at construction).
   std::size_t pieces() const noexcept { return data_->scale.size(); }
   /// The factor of piece i (g_i / m_f(D_i) in Algorithm 8.3).
   double scale(std::size_t i) const { return data_->scale.at(i); }

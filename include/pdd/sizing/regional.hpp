@@ -55,8 +55,13 @@ public:
   /// expected.
   explicit regional_sizing(const pslg& g) : field_(build(g, regions_)) {}
 
+  /// The bound of the face that holds p (the smallest of its regions'); infinity (no bound)
+  /// in a face without a bounded region and outside the domain.
   double area_at(const point& p) const { return field_.area_at(p); }
+  /// Bounds over the closed box b from the faces near it (see the class comment); {infinity,
+  /// infinity} when no bounded face is near.
   sizing_bounds range(const bbox& b) const { return field_.range(b); }
+  /// "regional": the field's name in reports (any_sizing::kind, min_sizing::kind).
   static constexpr const char* kind() noexcept { return "regional"; }
   /// Number of regions with a bound (max_area > 0).
   std::size_t bounded_regions() const noexcept { return regions_; }

@@ -18,9 +18,27 @@ struct file_names {
   std::string base;            ///< the input name without its extension (`dir/key`, `dir/key.1`)
   std::string poly;            ///< the .poly read (-p)
   std::string in_node;         ///< the .node read (without -p; with -r)
-  std::string in_ele, in_area; ///< -r: the previous mesh's .ele, and with a bare -a its .area
-  std::string node, ele, out_poly, neigh; ///< the outputs
-  std::string edge, v_node, v_edge;       ///< -e, -v
+  /// \var in_ele
+  /// -r: the previous mesh's .ele read (`<base>.ele`).
+  /// \var in_area
+  /// -r with a bare -a: the previous mesh's .area read (`<base>.area`).
+  std::string in_ele, in_area;
+  /// \var node
+  /// The output .node (`<stem>.node`); empty with -N, and with -I when the .node was read.
+  /// \var ele
+  /// The output .ele (`<stem>.ele`); empty with -E.
+  /// \var out_poly
+  /// The output .poly (`<stem>.poly`), with -p or -c only; empty with -P or -I.
+  /// \var neigh
+  /// The output .neigh (`<stem>.neigh`), with -n only.
+  std::string node, ele, out_poly, neigh;
+  /// \var edge
+  /// The output .edge (`<stem>.edge`), with -e only.
+  /// \var v_node
+  /// The Voronoi diagram's .v.node (`<stem>.v.node`), with -v only.
+  /// \var v_edge
+  /// The Voronoi diagram's .v.edge (`<stem>.v.edge`), with -v only.
+  std::string edge, v_node, v_edge;
 };
 
 namespace detail {

@@ -39,6 +39,8 @@ struct triangulation {
   /// for every vertex of `mesh`: the input's own, interpolated linearly at the others (see
   /// triangle/detail/vertex_attributes.hpp); empty when the input has none.
   std::vector<double> vertex_attributes;
+  /// Attributes per vertex in vertex_attributes (the input's pslg::vertex_attribute_count; 0:
+  /// none).
   std::size_t vertex_attribute_count = 0;
   /// Switch A: the regional attribute of every triangle (0 where no region seed lies).
   std::vector<double> triangle_attributes;

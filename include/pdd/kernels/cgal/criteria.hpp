@@ -19,6 +19,8 @@ namespace pdd::cgal {
 struct face_quality {
   double sine = 1.0; ///< sin^2 of the smallest angle
   double size = 0.0; ///< area / area bound (0 when unbounded)
+  /// True when this face is refined before q: a face over its area bound before one within
+  /// it (the larger excess first), else the smaller sin^2 first.
   bool operator<(const face_quality& q) const noexcept {
     if (size > 1.0) return q.size > 1.0 ? size > q.size : true;
     if (q.size > 1.0) return false;
@@ -38,13 +40,20 @@ struct face_quality {
 template <class Tr, SizingField S>
 class sizing_criteria {
 public:
+  /// The triangulation's face handle (what Is_bad classifies).
   using Face_handle = typename Tr::Face_handle;
+  /// A face's badness measures (CGAL's criteria interface).
   using Quality = face_quality;
 
+  /// Criteria with the shape bound B = sin^2(theta_min) (0.125 for 20.7 deg; 0: no angle
+  /// bound), the global area bound `max_area` (infinity: none) and the field `sizing`, which
+  /// is kept by pointer and must outlive the criteria.
   sizing_criteria(double shape_bound, double max_area, const S& sizing)
       : shape_bound_(shape_bound), max_area_(max_area), sizing_(&sizing) {}
 
+  /// B = sin^2 of the smallest angle allowed: a face below it is bad.
   double shape_bound() const noexcept { return shape_bound_; }
+  /// The global area bound, applied with the field's (infinity: none but the field's).
   double max_area() const noexcept { return max_area_; }
 
   /// The area bound at a point: min(max_area, sizing.area_at(p)).
@@ -63,14 +72,19 @@ public:
   /// CGAL's functor: classifies a face and fills its quality.
   class Is_bad {
   public:
+    /// A functor over the criteria `c`, which must outlive it.
     explicit Is_bad(const sizing_criteria& c) : c_(&c) {}
 
+    /// The badness of a face from its quality q: IMPERATIVELY_BAD over its area bound
+    /// (q.size > 1), else BAD below the shape bound, else NOT_BAD.
     CGAL::Mesh_2::Face_badness operator()(const Quality& q) const {
       if (q.size > 1.0) return CGAL::Mesh_2::IMPERATIVELY_BAD;
       if (q.sine < c_->shape_bound_) return CGAL::Mesh_2::BAD;
       return CGAL::Mesh_2::NOT_BAD;
     }
 
+    /// Measures face fh into q (area over the bound at its centroid, 0 when unbounded; sin^2
+    /// of its smallest angle) and returns its badness as operator()(q).
     CGAL::Mesh_2::Face_badness operator()(const Face_handle& fh, Quality& q) const {
       const point a = to_point(fh->vertex(0)->point());
       const point b = to_point(fh->vertex(1)->point());
@@ -89,6 +103,7 @@ public:
     const sizing_criteria* c_;
   };
 
+  /// The Is_bad functor of these criteria (CGAL's criteria interface); it refers to them.
   Is_bad is_bad_object() const { return Is_bad(*this); }
 
 private:
