@@ -50,7 +50,7 @@ constexpr const char* path_name(mesh_path p) noexcept {
 }
 
 /// What a run does, decided before any work (pdd::plan_run) and changed only by the plans that
-/// pdd::whole_domain_plan and pdd::geometric_retry_plan return.
+/// pdd::whole_domain_plan and pdd::plan_after_path return.
 struct run_plan {
   /// The path the run takes (monolithic by default: N = 1, the kernel on the whole domain).
   mesh_path path = mesh_path::monolithic;
