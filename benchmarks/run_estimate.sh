@@ -11,6 +11,7 @@ set -euo pipefail
 build=${1:-build/release}
 data=../shared/data
 exe="$build/examples/drivers/pdd-mesh"
+# shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/estimate.jsonl
 provenance_json "bash benchmarks/run_estimate.sh $*" >"$out"
