@@ -80,7 +80,7 @@ for field in dict.fromkeys(r["field"] for r in runs):
               f"{r['monolithic_triangles']} | {r['shielded_triangles']} | {t['mesh']:.2f} | "
               f"{t['monolithic_comparison']:.2f} | {r['wall_seconds']:.2f} | "
               f"{r['cpu_seconds']:.2f} | {r['max_rss_kib'] // 1024} |")
-verified = [r for r in runs if r["verified"] is not None]
+verified = [r for r in runs if r["delaunay_violations"] is not None]
 if verified:
     print("\n### Verified (`--verify`, N = 64)\n")
     print("| binary | field | geometry | triangles | verified | Delaunay violations | conforming "
