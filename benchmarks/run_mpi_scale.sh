@@ -19,7 +19,7 @@ input=examples/data/pipe.poly
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/scale-fixed.jsonl
-provenance_json "bash benchmarks/run_mpi_scale.sh $*" >"$out"
+provenance_json "REPS=${REPS:-3} bash benchmarks/run_mpi_scale.sh ${*@Q}" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 record() { # REP P_OR_threaded: one raw data line from $tmp/run.json and $tmp/time

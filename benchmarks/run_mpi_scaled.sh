@@ -23,7 +23,7 @@ input=examples/data/pipe.poly
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/scale-scaled.jsonl
-provenance_json "bash benchmarks/run_mpi_scaled.sh $*" >"$out"
+provenance_json "REPS=${REPS:-3} bash benchmarks/run_mpi_scaled.sh ${*@Q}" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for format in $formats; do

@@ -17,7 +17,7 @@ exe="$build/examples/drivers/pdd-mesh"
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/resume.jsonl
-provenance_json "bash benchmarks/run_resume.sh $*" >"$out"
+provenance_json "bash benchmarks/run_resume.sh ${*@Q}" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 timed() { # TIME_FILE COMMAND...: /usr/bin/time's "user system wall" of COMMAND
