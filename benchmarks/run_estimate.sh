@@ -4,11 +4,17 @@
 # (--subdomains 1), on the shared geometries (quality only, and at a modest --max-area) and on
 # corridors and spikes written to a temporary folder; then the refusal of the issue-17 needle
 # with its time and peak memory (/usr/bin/time). A few seconds in all.
+# Raw data: benchmarks/results/estimate.jsonl (first line: the provenance, then one line per
+# run); the table and the needle's line are printed from it only.
 #   bash benchmarks/run_estimate.sh [BUILD_DIR]
 set -euo pipefail
 build=${1:-build/release}
 data=../shared/data
 exe="$build/examples/drivers/pdd-mesh"
+# shellcheck source=provenance.sh source-path=SCRIPTDIR
+source "$(dirname "$0")/provenance.sh"
+out=benchmarks/results/estimate.jsonl
+provenance_json "bash benchmarks/run_estimate.sh $*" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 tri() { printf '3 2 0 0\n1 0 0\n2 1 0\n3 0.5 %s\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' "$2" >"$tmp/$1.poly"; }
@@ -17,17 +23,21 @@ tri spike-1e3 1000
 tri spike-1e4 10000
 printf '4 2 0 0\n1 0 0\n2 100 0\n3 100 1\n4 0 1\n4 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n0\n' \
   >"$tmp/corridor-1x100.poly"
-echo "| input | --max-area | estimate | triangles made | estimate / made |"
-echo "|---|---|---|---|---|"
 run() { # file max-area
   local area=()
   [ "$2" = none ] || area=(--max-area "$2")
-  "$exe" "$1" "${area[@]}" --subdomains 1 -q --stats "$tmp/s.json"
-  python3 - "$1" "$2" "$tmp/s.json" <<'EOF'
+  /usr/bin/time -f "%U %S %e %M" -o "$tmp/time" \
+    "$exe" "$1" "${area[@]}" --subdomains 1 -q --stats "$tmp/s.json"
+  python3 - "$out" "$1" "$2" "$tmp/s.json" "$tmp/time" <<'EOF'
 import json, os, sys
-j = json.load(open(sys.argv[3]))
-e, t = j["estimated_triangles"], j["triangles"]
-print(f"| {os.path.basename(sys.argv[1])} | {sys.argv[2]} | {e:.0f} | {t} | {e / t:.2f} |")
+out, poly, area, stats, time_file = sys.argv[1:]
+j = json.load(open(stats))
+user, system, wall, rss = open(time_file).read().split()[-4:]
+line = {"input": os.path.basename(poly), "max_area": area,
+        "estimated_triangles": j["estimated_triangles"], "triangles": j["triangles"],
+        "wall_seconds": float(wall), "cpu_seconds": float(user) + float(system),
+        "max_rss_kib": int(rss)}
+open(out, "a").write(json.dumps(line) + "\n")
 EOF
 }
 for g in lake_superior:none lake_superior:1e-4 texas:none mesh2d_airfoil_3element:none \
@@ -42,6 +52,36 @@ run "$tmp/spike-1e3.poly" 0.1
 run "$tmp/spike-1e4.poly" 1
 run "$tmp/spike-1e4.poly" 100
 printf '3 2 0 0\n1 0 1\n2 1 0\n3 0.5 4444444422\n3 0\n1 1 2\n2 2 3\n3 3 1\n0\n' >"$tmp/needle.poly"
-echo
-echo "needle, --max-area 1.48e7 (exit status, wall seconds, max RSS KiB):"
-/usr/bin/time -f "%x %e s %M KiB" "$exe" "$tmp/needle.poly" --max-area 1.48e7 -q || true
+status=0
+/usr/bin/time -f "%U %S %e %M" -o "$tmp/time" \
+  "$exe" "$tmp/needle.poly" --max-area 1.48e7 -q 2>"$tmp/err" || status=$?
+python3 - "$out" "$status" "$tmp/err" "$tmp/time" <<'EOF'
+import json, sys
+out, status, err, time_file = sys.argv[1:]
+user, system, wall, rss = open(time_file).read().split()[-4:]
+line = {"input": "needle.poly", "max_area": "1.48e7", "exit_status": int(status),
+        "message": open(err).read().strip(), "wall_seconds": float(wall),
+        "cpu_seconds": float(user) + float(system), "max_rss_kib": int(rss)}
+open(out, "a").write(json.dumps(line) + "\n")
+EOF
+python3 - "$out" <<'EOF'
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1])]
+p = lines[0]["provenance"]
+print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
+    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+print("| input | --max-area | estimate | triangles made | estimate / made | wall s |")
+print("|---|---|---|---|---|---|")
+runs = [r for r in lines[1:] if "triangles" in r]
+for r in runs:
+    e, t = r["estimated_triangles"], r["triangles"]
+    print(f"| {r['input']} | {r['max_area']} | {e:.0f} | {t} | {e / t:.2f} | "
+          f"{r['wall_seconds']:.2f} |")
+ratios = [r["estimated_triangles"] / r["triangles"] for r in runs]
+print(f"\nestimate / made: {min(ratios):.2f}-{max(ratios):.2f} over {len(runs)} runs\n")
+for r in lines[1:]:
+    if "exit_status" in r:
+        print(f"{r['input']}, --max-area {r['max_area']}: exit status {r['exit_status']}, "
+              f"{r['wall_seconds']:.2f} s wall, {r['cpu_seconds']:.2f} s CPU, "
+              f"{r['max_rss_kib'] / 1024:.1f} MiB max RSS\n\n```\n{r['message']}\n```")
+EOF

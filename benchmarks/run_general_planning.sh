@@ -4,12 +4,19 @@
 # isolated well inside, meshed coarsely so that validation, the faces and MADD dominate.
 # Usage: benchmarks/run_general_planning.sh BUILD_DIR [N] [OLD_PDD_MESH]
 # OLD_PDD_MESH: a pdd-mesh of another commit, run alternately with this one (side by side).
+# Raw data: benchmarks/results/general-planning.jsonl (first line: the provenance, then one line
+# per run with its timings); the table is printed from it only.
 set -euo pipefail
 build=${1:?build dir}
 n=${2:-200000}
 old=${3:-}
-poly=$(mktemp --suffix=.poly)
-trap 'rm -f "$poly" /tmp/general_planning_*.json' EXIT
+# shellcheck source=provenance.sh source-path=SCRIPTDIR
+source "$(dirname "$0")/provenance.sh"
+out=benchmarks/results/general-planning.jsonl
+provenance_json "bash benchmarks/run_general_planning.sh $*" >"$out"
+tmp=$(mktemp -d)
+poly="$tmp/ring.poly"
+trap 'rm -rf "$tmp"' EXIT
 python3 - "$n" "$poly" <<'PY'
 import math, sys
 n, path = int(sys.argv[1]), sys.argv[2]
@@ -23,23 +30,39 @@ with open(path, "w") as f:
     f.writelines(f"{i + 1} {i + 1} {(i + 1) % n + 1}\n" for i in range(n))
     f.write(f"{n + 1} {n + 1} {n + 2}\n0\n")
 PY
-run() { # label exe
-  /usr/bin/time -f "%e %U %M" -o /tmp/general_planning_time "$2" "$poly" --max-area 1e-4 \
-    --threads 1 --subdomains 8 --stats "/tmp/general_planning_$1.json" -q
-  python3 - "$1" <<'PY'
+run() { # label rep exe
+  /usr/bin/time -f "%e %U %S %M" -o "$tmp/time" "$3" "$poly" --max-area 1e-4 \
+    --threads 1 --subdomains 8 --stats "$tmp/stats.json" -q
+  python3 - "$out" "$1" "$2" "$n" "$tmp" <<'PY'
 import json, sys
-label = sys.argv[1]
-s = json.load(open(f"/tmp/general_planning_{label}.json"))
+out, label, rep, n, tmp = sys.argv[1:]
+s = json.load(open(f"{tmp}/stats.json"))
 t = s["timings"]
-wall, user, rss = open("/tmp/general_planning_time").read().split()
+wall, user, system, rss = open(f"{tmp}/time").read().split()[-4:]
 stages = sum(t[k] for k in ("read", "decompose", "decouple", "mesh", "merge", "write"))
-print(f"| {label} | {s['triangles']} | {wall} | {user} | {t['total'] - stages:.2f} | "
-      f"{t['decompose']:.2f} | {t['mesh']:.2f} | {int(rss) // 1024} |")
+line = {"binary": label, "rep": int(rep), "ring_segments": int(n), "triangles": s["triangles"],
+        "subdomains": s["subdomains"], "path": s["path"], "wall_seconds": float(wall),
+        "user_seconds": float(user), "cpu_seconds": float(user) + float(system),
+        "max_rss_kib": int(rss), "plan_seconds": t["total"] - stages, "timings": t}
+open(out, "a").write(json.dumps(line) + "\n")
 PY
 }
-echo "| pdd-mesh | triangles | wall s | user s | plan s (total - stages) | decompose s | mesh s | max RSS MiB |"
-echo "|---|---|---|---|---|---|---|---|"
-for _ in 1 2; do
-  [ -z "$old" ] || run old "$old"
-  run new "$build/examples/drivers/pdd-mesh"
+for rep in 1 2; do
+  [ -z "$old" ] || run old "$rep" "$old"
+  run new "$rep" "$build/examples/drivers/pdd-mesh"
 done
+python3 - "$out" <<'PY'
+import json, sys
+lines = [json.loads(l) for l in open(sys.argv[1])]
+p = lines[0]["provenance"]
+print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
+    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+print("| rep | pdd-mesh | triangles | wall s | CPU s | plan s (total - stages) | decompose s "
+      "| mesh s | max RSS MiB |")
+print("|---|---|---|---|---|---|---|---|---|")
+for r in lines[1:]:
+    t = r["timings"]
+    print(f"| {r['rep']} | {r['binary']} | {r['triangles']} | {r['wall_seconds']:.2f} | "
+          f"{r['cpu_seconds']:.2f} | {r['plan_seconds']:.2f} | {t['decompose']:.2f} | "
+          f"{t['mesh']:.2f} | {r['max_rss_kib'] // 1024} |")
+PY

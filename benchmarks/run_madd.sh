@@ -2,8 +2,10 @@
 # Reproduces benchmarks/results/madd.md: MADD (1 and 2 threads) against METIS on a background
 # Delaunay mesh (~120 triangles per part) for the key, the pipe and bahamas_islands.poly (skipped
 # when the shared data folder is absent), N = 16, 64, 256, 1024. Every run is one process
-# printing one JSON line (benchmarks/bench_madd.cpp); the lines are kept in $build/madd.jsonl
-# and the markdown table is printed on stdout. Each run is timed 5 times, the fastest counts.
+# printing one JSON line (benchmarks/bench_madd.cpp). Raw data: benchmarks/results/madd.jsonl
+# (first line: the provenance, then the runs' lines, then one line with the other work the
+# machine did during the runs); the markdown table is printed from it only. Each run is timed 5
+# times, the fastest counts. bench_madd is built (cmake --build) only when it is missing.
 #   bash benchmarks/run_madd.sh [BUILD_DIR [DATA_DIR]]   (defaults build/release, ../shared/data)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -12,8 +14,12 @@ data=${2:-../shared/data}
 if [[ ! -f "$build/CMakeCache.txt" ]]; then
   cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DPDD_BUILD_BENCHMARKS=ON >/dev/null
 fi
-cmake --build "$build" --target bench_madd -j1 >/dev/null
 bench="$build/benchmarks/bench_madd"
+[ -x "$bench" ] || cmake --build "$build" --target bench_madd -j1 >/dev/null
+# shellcheck source=provenance.sh source-path=SCRIPTDIR
+source benchmarks/provenance.sh
+out=benchmarks/results/madd.jsonl
+provenance_json "bash benchmarks/run_madd.sh $*" >"$out"
 repeats=5
 domains=(key pipe)
 if [[ -f "$data/bahamas_islands.poly" ]]; then
@@ -21,7 +27,6 @@ if [[ -f "$data/bahamas_islands.poly" ]]; then
 else
   echo "note: $data/bahamas_islands.poly not found, bahamas skipped" >&2
 fi
-out="$build/madd.jsonl"
 # CPU time of the whole machine (/proc/stat) and of this script's children (/proc/$$/stat),
 # in clock ticks, to state how busy the other users kept the machine during the runs.
 machine_busy() { awk '/^cpu /{print $2+$3+$4+$7+$8+$9}' /proc/stat; }
@@ -33,17 +38,27 @@ for d in "${domains[@]}"; do
     "$bench" "$d" madd "$n" 2 "$repeats"
     "$bench" "$d" metis "$n" 1 "$repeats"
   done
-done >"$out"
-
-others=$(awk -v b0="$busy0" -v b1="$(machine_busy)" -v o0="$own0" -v o1="$(own_busy)" \
-  -v t0="$start" -v t1="$(date +%s.%N)" -v hz="$(getconf CLK_TCK)" \
-  'BEGIN{printf "%.2f cores busy with other work over %.0f s", ((b1-b0)-(o1-o0))/hz/(t1-t0), t1-t0}')
-cpu=$(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')
-echo "Machine: $(nproc) cores ($cpu), shared: $others; fastest of $repeats per run."
-echo
+done >>"$out"
+python3 - "$out" "$busy0" "$(machine_busy)" "$own0" "$(own_busy)" "$start" "$(date +%s.%N)" \
+  "$(getconf CLK_TCK)" "$repeats" <<'EOF'
+import json, sys
+out, b0, b1, o0, o1, t0, t1, hz, repeats = sys.argv[1:]
+seconds = float(t1) - float(t0)
+others = ((float(b1) - float(b0)) - (float(o1) - float(o0))) / float(hz) / seconds
+open(out, "a").write(json.dumps({"machine_load": {"other_work_cores": others,
+                                                  "seconds": seconds,
+                                                  "repeats": int(repeats)}}) + "\n")
+EOF
 python3 - "$out" <<'EOF'
 import json, sys
-runs = [json.loads(line) for line in open(sys.argv[1])]
+lines = [json.loads(line) for line in open(sys.argv[1])]
+p = lines[0]["provenance"]
+print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
+    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+load = next(l["machine_load"] for l in lines if "machine_load" in l)
+print("Shared machine: %.2f cores busy with other work over %.0f s; fastest of %d per run.\n" % (
+    load["other_work_cores"], load["seconds"], load["repeats"]))
+runs = [l for l in lines[1:] if "method" in l]
 key = lambda r: (r["domain"], r["N"])
 madd1 = {key(r): r for r in runs if r["method"] == "madd" and r["threads"] == 1}
 madd2 = {key(r): r for r in runs if r["method"] == "madd" and r["threads"] == 2}
