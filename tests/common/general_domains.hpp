@@ -346,9 +346,10 @@ inline pslg random_map_with_features(std::uint32_t seed, int n = 6, int features
 }
 
 /// An arrangement of random_arrangement(7) before its 10 deg filter, by Triangle's rule: two
-/// segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square; the CGAL
-/// kernel refuses it with an unresolvable_input_error (the rounded split point falls beyond the
-/// other segment). The kernel's test and the fuzz target's seed corpus use it.
+/// segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square. With
+/// circumcentre refinement the CGAL kernel refused it (a rounded split point fell beyond the
+/// other segment); with off-centres it meshes it, the triangles in the small angle exempt by
+/// the cluster rule. The kernel's test and the fuzz target's seed corpus use it.
 inline pslg sub_degree_angle_domain() {
   std::istringstream in(R"(# pdd .poly: vertices <#> <dim> <#attributes> <#markers>
 21 2 0 1
@@ -398,6 +399,24 @@ inline pslg sub_degree_angle_domain() {
 0
 )");
   pslg g = parse_poly(in, "sub-degree.poly", "");
+  g.rule = domain_rule::triangle;
+  return g;
+}
+
+/// The unit square with two segments from (0, 0.3) to the right side, ending at (1, 0.7) and
+/// (1, 0.7 + 2e-16): an angle of about 2e-16 rad, valid (exact predicates: the segments meet
+/// only at their common end) but beyond double precision: a split point of one, rounded, falls
+/// on the other side of the other, and the CGAL kernel refuses it with an
+/// unresolvable_input_error ("cannot be split").
+inline pslg unresolvable_angle_domain() {
+  pslg g;
+  for (const point p : {point{0, 0}, point{1, 0}, point{1, 0.7}, point{1, 0.7 + 2e-16},
+                        point{1, 1}, point{0, 1}, point{0, 0.3}})
+    g.add_vertex(p);
+  for (const auto& [a, b] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{2, 3}, std::pair{3, 4},
+                             std::pair{4, 5}, std::pair{5, 6}, std::pair{6, 0}, std::pair{6, 2},
+                             std::pair{6, 3}})
+    g.add_segment(static_cast<index_t>(a), static_cast<index_t>(b));
   g.rule = domain_rule::triangle;
   return g;
 }

@@ -145,10 +145,10 @@ TEST(PddMesh, ExitCodesAndMessages) {
   r = run(PDD_MESH_EXE, bow);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("segment"), std::string::npos) << r.output;
-  // valid input beyond the kernel's double precision (two segments at about 0.2 deg): exit 5,
+  // valid input beyond the kernel's double precision (two segments at about 2e-16 rad): exit 5,
   // reported as an error of the input, not an internal error
-  const fs::path sub_degree = pdd::test::temp_path("sub_degree.poly");
-  pdd::write_poly(sub_degree, pdd::test::sub_degree_angle_domain());
+  const fs::path sub_degree = pdd::test::temp_path("unresolvable_angle.poly");
+  pdd::write_poly(sub_degree, pdd::test::unresolvable_angle_domain());
   r = run(PDD_MESH_EXE, sub_degree.string() + " --max-area 0.005 --kernel cgal");
   EXPECT_EQ(r.code, 5) << r.output;
   EXPECT_NE(r.output.find("pdd-mesh: error: "), std::string::npos) << r.output;

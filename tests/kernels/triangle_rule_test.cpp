@@ -1,6 +1,7 @@
 // pdd::cgal::mesher on domains of Triangle's rule (pslg::rule, issue 13): internal constraints
-// keep both faces, isolated vertices become mesh vertices, and a constraint pair at an angle
-// too small for double precision is refused with a meshing_error, never a corrupt triangulation.
+// keep both faces, isolated vertices become mesh vertices, a constraint pair at a sub-degree
+// angle is meshed and verifies, and one at an angle too small for double precision is refused
+// with an unresolvable_input_error, never a corrupt triangulation.
 #include <pdd/generate.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/cluster_exempt.hpp>
@@ -53,9 +54,9 @@ TEST(CgalMesherTriangleRule, InternalConstraintKeepsBothFaces) {
 }
 
 TEST(CgalMesherTriangleRule, UnresolvableAngleIsAnUnresolvableInputError) {
-  // two segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square: an
-  // input limit (its own class and exit code), not a kernel failure
-  const pdd::pslg g = pdd::test::sub_degree_angle_domain();
+  // two segments leave (0, 0.3) at about 2e-16 rad and cross the whole square: an input limit
+  // (its own class and exit code), not a kernel failure
+  const pdd::pslg g = pdd::test::unresolvable_angle_domain();
   try {
     (void)pdd::cgal::mesher{}.mesh(g, criteria(0.005), pdd::uniform_sizing{});
     ADD_FAILURE() << "meshed";
@@ -72,6 +73,23 @@ TEST(CgalMesherTriangleRule, UnresolvableAngleIsAnUnresolvableInputError) {
   } catch (const pdd::unresolvable_input_error& e) {
     EXPECT_NE(std::string(e.what()).find("cannot be split"), std::string::npos) << e.what();
   }
+}
+
+// Two segments leave the vertex (1, 0.168) at about 0.2 deg and cross the whole square (this
+// domain was refused as unresolvable while the kernel refined at circumcentres): meshed, and it
+// verifies with the cluster rule's exemption at that angle and nowhere else.
+TEST(CgalMesherTriangleRule, ASubDegreeAngleIsMeshedAndVerifies) {
+  const pdd::pslg g = pdd::test::sub_degree_angle_domain();
+  const auto r = pdd::cgal::mesher{}.mesh(g, criteria(0.005), pdd::uniform_sizing{});
+  pdd::verify_options vo;
+  vo.criteria = criteria(0.005);
+  vo.quality_exempt = pdd::find_cluster_exempt_triangles(r.mesh, g, 20.7);
+  const pdd::verification_report report = pdd::verify(r.mesh, g, vo);
+  EXPECT_TRUE(report.ok()) << (report.messages.empty() ? "" : report.messages.front());
+  EXPECT_NEAR(report.area_mesh, 1.0, 1e-12);
+  const auto exempt = std::count(vo.quality_exempt->begin(), vo.quality_exempt->end(), 1);
+  EXPECT_GT(exempt, 0);
+  EXPECT_LT(exempt, static_cast<std::ptrdiff_t>(r.mesh.triangles.size() / 10));
 }
 
 } // namespace

@@ -33,7 +33,9 @@ namespace pdd::cgal {
 /// counts as encroached only by vertices on a side of it that lies in the domain (as in
 /// Triangle), a bad face is left unrefined by the cluster rule for small input angles only when
 /// the small angle lies in the domain (CGAL also did so at sharp corners of holes and notches,
-/// detail/cluster_rule.hpp), and the criteria are pdd::cgal::sizing_criteria.
+/// detail/cluster_rule.hpp), a bad face is refined at its off-centre where that is nearer to
+/// its shortest edge than its circumcentre (kernels/detail/off_centre.hpp, as Triangle does),
+/// and the criteria are pdd::cgal::sizing_criteria.
 ///
 /// Output: the input vertices first, in input order, with their coordinates and markers copied
 /// bit for bit; then the Steiner vertices in the triangulation's insertion order (deterministic:

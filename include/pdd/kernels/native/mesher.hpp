@@ -26,8 +26,8 @@ namespace pdd::native {
 /// by Lawson's flips; the domain is marked by flood fill (odd nesting of segment loops, less
 /// hole regions); then refinement (detail/refine.hpp): encroached subsegments are split at
 /// their midpoints (on concentric shells next to an input vertex), bad triangles get their
-/// circumcentres from a bucketed queue, and a circumcentre that encroaches a subsegment is not
-/// inserted: the subsegment is split instead. A subsegment is encroached only by vertices on a
+/// off-centres or circumcentres (kernels/detail/off_centre.hpp) from a bucketed queue, and a
+/// point that encroaches a subsegment is not inserted: the subsegment is split instead. A subsegment is encroached only by vertices on a
 /// domain side of it. Every geometric decision uses Epick's exact predicates (orientation,
 /// in-circle, angle); no epsilon decides topology.
 ///

@@ -20,6 +20,7 @@
 #include <CGAL/Meshes/Triangulation_mesher_level_traits_2.h>
 
 #include <pdd/errors.hpp>
+#include <pdd/kernels/detail/off_centre.hpp>
 
 #include <algorithm>
 #include <array>
@@ -82,9 +83,11 @@ public:
     heap_.pop_back();
   }
 
-  /// The circumcentre of f. \throws unresolvable_input_error naming f's corners when f is so
-  /// flat that its circumcentre is not finite in double precision (CGAL divides by the
-  /// determinant of its edge vectors; the release build would go on with a NaN point).
+  /// The point that refines f: its off-centre (off_centre) where that is nearer to f's
+  /// shortest edge than its circumcentre, else the circumcentre. \throws
+  /// unresolvable_input_error naming f's corners when f is so flat that its circumcentre is not
+  /// finite in double precision (CGAL divides by the determinant of its edge vectors; the
+  /// release build would go on with a NaN point).
   Point refinement_point_impl(const Face_handle& f) const {
     const Point &p = f->vertex(0)->point(), &q = f->vertex(1)->point(), &r = f->vertex(2)->point();
     const double qx = q.x() - p.x(), qy = q.y() - p.y(), rx = r.x() - p.x(), ry = r.y() - p.y();
@@ -98,7 +101,18 @@ public:
               "input angle or feature too small to resolve)";
       throw unresolvable_input_error(-1, what.str());
     }
-    return c;
+    return off_centre(f, c);
+  }
+
+  /// detail::off_centre of f (kernels/detail/off_centre.hpp) with its circumcentre c under the
+  /// criteria's shape bound.
+  Point off_centre(const Face_handle& f, const Point& c) const {
+    const auto at = [&](int i) {
+      return point{f->vertex(i)->point().x(), f->vertex(i)->point().y()};
+    };
+    const point o = detail::off_centre(at(0), at(1), at(2), point{c.x(), c.y()},
+                                       criteria_.shape_bound());
+    return o.x == c.x() && o.y == c.y() ? c : Point(o.x, o.y);
   }
 
   void before_conflicts_impl(const Face_handle&, const Point&) {

@@ -19,6 +19,7 @@
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/triangle_measures.hpp>
+#include <pdd/kernels/detail/off_centre.hpp>
 #include <pdd/kernels/native/detail/insertion.hpp>
 #include <pdd/kernels/native/detail/segments.hpp>
 
@@ -181,12 +182,12 @@ private:
     after_insertion();
   }
 
-  /// Inserts the circumcentre of a bad triangle, or queues the subsegments it encroaches and
-  /// the triangle again.
+  /// Inserts the refinement point of a bad triangle (its off-centre or circumcentre,
+  /// detail::off_centre), or queues the subsegments it encroaches and the triangle again.
   void refine_triangle(const bad_queue::entry& e) {
     const point &a = tr_.at(e.t, 0), &b = tr_.at(e.t, 1), &c = tr_.at(e.t, 2);
     const auto cc = CGAL::circumcenter(cp(a), cp(b), cp(c));
-    const point p{cc.x(), cc.y()};
+    const point p = off_centre(a, b, c, point{cc.x(), cc.y()}, shape_bound_);
     cav_.grow(tr_, p, {e.t}, no_ref);
     const std::vector<ref_t>& enc = cav_.encroached_segments(tr_, p);
     if (!enc.empty()) {
