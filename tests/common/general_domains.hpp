@@ -410,12 +410,12 @@ inline pslg sub_degree_angle_domain() {
 /// unresolvable_input_error ("cannot be split").
 inline pslg unresolvable_angle_domain() {
   pslg g;
-  for (const point p : {point{0, 0}, point{1, 0}, point{1, 0.7}, point{1, 0.7 + 2e-16},
-                        point{1, 1}, point{0, 1}, point{0, 0.3}})
+  for (const point p : {point{0, 0}, point{1, 0}, point{1, 0.7}, point{1, 0.7 + 2e-16}, point{1, 1},
+                        point{0, 1}, point{0, 0.3}})
     g.add_vertex(p);
-  for (const auto& [a, b] : {std::pair{0, 1}, std::pair{1, 2}, std::pair{2, 3}, std::pair{3, 4},
-                             std::pair{4, 5}, std::pair{5, 6}, std::pair{6, 0}, std::pair{6, 2},
-                             std::pair{6, 3}})
+  for (const auto& [a, b] :
+       {std::pair{0, 1}, std::pair{1, 2}, std::pair{2, 3}, std::pair{3, 4}, std::pair{4, 5},
+        std::pair{5, 6}, std::pair{6, 0}, std::pair{6, 2}, std::pair{6, 3}})
     g.add_segment(static_cast<index_t>(a), static_cast<index_t>(b));
   g.rule = domain_rule::triangle;
   return g;

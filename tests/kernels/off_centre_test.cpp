@@ -22,12 +22,14 @@ using pdd::point;
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 point circumcentre(const point& a, const point& b, const point& c) {
-  const K::Point_2 o = CGAL::circumcenter(K::Point_2(a.x, a.y), K::Point_2(b.x, b.y),
-                                          K::Point_2(c.x, c.y));
+  const K::Point_2 o =
+      CGAL::circumcenter(K::Point_2(a.x, a.y), K::Point_2(b.x, b.y), K::Point_2(c.x, c.y));
   return {o.x(), o.y()};
 }
 
-double distance(const point& p, const point& q) { return std::hypot(p.x - q.x, p.y - q.y); }
+double distance(const point& p, const point& q) {
+  return std::hypot(p.x - q.x, p.y - q.y);
+}
 
 double min_angle_deg(const point& a, const point& b, const point& c) {
   const auto angles = pdd::detail::triangle_angles_deg(a, b, c);

@@ -110,8 +110,8 @@ public:
     const auto at = [&](int i) {
       return point{f->vertex(i)->point().x(), f->vertex(i)->point().y()};
     };
-    const point o = detail::off_centre(at(0), at(1), at(2), point{c.x(), c.y()},
-                                       criteria_.shape_bound());
+    const point o =
+        detail::off_centre(at(0), at(1), at(2), point{c.x(), c.y()}, criteria_.shape_bound());
     return o.x == c.x() && o.y == c.y() ? c : Point(o.x, o.y);
   }
 
