@@ -14,6 +14,11 @@
 #include <random>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace poly_write_test {
 namespace {
@@ -230,6 +235,46 @@ TEST(AtomicFile, FailedWritesLeaveNoTemporaryAndKeepTheOldFile) {
 
   // A path without a file name.
   EXPECT_THROW(pdd::write_file_atomically(dir / "", [](std::ostream&) {}), pdd::error);
+}
+
+/// What the FIFO at `fifo` holds after `write` ran with a reader open on it (non-blocking, so
+/// that the writer's open does not wait; the content fits in the pipe's buffer).
+template <class Write>
+std::string through_fifo(const std::filesystem::path& fifo, Write write) {
+  const int fd = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  EXPECT_GE(fd, 0);
+  EXPECT_NO_THROW(write());
+  std::string got(4096, '\0');
+  const ::ssize_t n = fd >= 0 ? ::read(fd, got.data(), got.size()) : -1;
+  if (fd >= 0) ::close(fd);
+  got.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  return got;
+}
+
+// A FIFO (as /dev/null, /dev/stdout or a pipe a user names) is written in place: its reader
+// gets the content, and afterwards it is still a FIFO, with no temporary file beside it. A
+// rename onto it would have replaced it with a regular file (as it once replaced /dev/null
+// for the whole machine when `pdd-mesh --stats /dev/null` ran as root).
+TEST(AtomicFile, SpecialFilesAreWrittenInPlace) {
+  const auto dir = pdd::test::fresh_dir("fifo");
+  const auto fifo = dir / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_EQ(through_fifo(fifo,
+                         [&] {
+                           pdd::write_file_atomically(
+                               fifo, [](std::ostream& os) { os << "through the pipe"; });
+                         }),
+            "through the pipe");
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_EQ(pdd::test::dir_entries(dir), std::vector<std::string>{"pipe"});
+  // a symbolic link to it: the link is followed, not replaced
+  std::filesystem::create_symlink(fifo, dir / "link");
+  pdd::pslg g;
+  g.add_vertex({0.5, 0.25});
+  const std::string poly = through_fifo(fifo, [&] { pdd::write_poly(dir / "link", g); });
+  EXPECT_NE(poly.find("0.5 0.25"), std::string::npos) << poly;
+  EXPECT_TRUE(std::filesystem::is_symlink(dir / "link"));
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
 }
 
 } // namespace poly_write_test

@@ -20,7 +20,10 @@ namespace pdd {
 /// synced to disk (fsync), and only then renamed onto `path` (std::filesystem::rename, atomic on
 /// POSIX file systems), and the directory synced: a run killed at any moment, or a power loss,
 /// leaves either no file (or the old one) or the complete new one under `path`. An existing
-/// file at `path` is replaced only on success.
+/// file at `path` is replaced only on success. A `path` that is, or links to, something other
+/// than a regular file or a directory (a character device such as /dev/null, a FIFO, a socket,
+/// /dev/stdout) is written in place, as a shell redirection would: renaming a file onto it
+/// would replace /dev/null with a regular file for every other program on the machine.
 ///
 /// \tparam Writer callable as `writer(std::ostream&)`; it may throw.
 /// \pre `path` names a file (not a directory) in an existing directory.
@@ -36,6 +39,10 @@ requires std::invocable<Writer&, std::ostream&>
 void write_file_atomically(const std::filesystem::path& path, Writer&& writer) {
   const std::string where = "cannot write '" + path.string() + "': ";
   if (path.empty() || !path.has_filename()) throw error(where + "not a file name");
+  if (detail::is_special_file(path)) {
+    detail::write_in_place(path, writer, where);
+    return;
+  }
   const std::filesystem::path tmp = detail::temporary_sibling(path);
   std::ofstream out = detail::open_temporary(tmp, where);
   try {

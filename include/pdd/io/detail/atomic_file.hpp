@@ -1,6 +1,6 @@
 /// \file atomic_file.hpp
 /// Implementation of pdd::write_file_atomically: the temporary file's name, opening,
-/// finishing, discarding and renaming it.
+/// finishing, discarding and renaming it, and the writes in place into special files.
 #pragma once
 
 #include <pdd/errors.hpp>
@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <fstream>
 #include <ios>
+#include <ostream>
 #include <random>
 #include <string>
 #include <system_error>
@@ -119,6 +120,35 @@ inline void rename_temporary(const std::filesystem::path& tmp, const std::filesy
     throw error(where + "renaming the temporary file failed (" + ec.message() + ")");
   }
   sync_to_disk(directory_of(path), true, where);
+}
+
+/// True when path exists and is, or links to, neither a regular file nor a directory: a
+/// character or block device (/dev/null), a FIFO, a socket, /dev/stdout's pipe or terminal.
+inline bool is_special_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  const std::filesystem::file_status st = std::filesystem::status(path, ec);
+  if (ec || !std::filesystem::exists(st)) return false;
+  return !std::filesystem::is_regular_file(st) && !std::filesystem::is_directory(st);
+}
+
+/// Writes `writer`'s output straight into the special file at path (no temporary, no rename,
+/// no fsync: a device or a pipe has no file to make durable).
+/// 	hrows pdd::error starting with `where` when it cannot be opened or a write fails; a
+///   pdd::error from `writer` unchanged, any other std::exception as a pdd::error.
+template <class Writer>
+void write_in_place(const std::filesystem::path& path, Writer& writer, const std::string& where) {
+  std::ofstream out;
+  errno = 0;
+  out.open(path, std::ios::binary);
+  if (!out.is_open()) throw error(where + "cannot open it (" + errno_message(errno) + ")");
+  try {
+    writer(static_cast<std::ostream&>(out));
+  } catch (const error&) {
+    throw;
+  } catch (const std::exception& e) {
+    throw error(where + e.what());
+  }
+  finish_temporary(out, where);
 }
 
 } // namespace pdd::detail
