@@ -64,12 +64,10 @@ line = {"input": "needle.poly", "max_area": "1.48e7", "exit_status": int(status)
         "cpu_seconds": float(user) + float(system), "max_rss_kib": int(rss)}
 open(out, "a").write(json.dumps(line) + "\n")
 EOF
-python3 - "$out" <<'EOF'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 print("| input | --max-area | estimate | triangles made | estimate / made | wall s |")
 print("|---|---|---|---|---|---|")
 runs = [r for r in lines[1:] if "triangles" in r]

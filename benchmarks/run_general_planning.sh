@@ -51,12 +51,10 @@ for rep in 1 2; do
   [ -z "$old" ] || run old "$rep" "$old"
   run new "$rep" "$build/examples/drivers/pdd-mesh"
 done
-python3 - "$out" <<'PY'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 print("| rep | pdd-mesh | triangles | wall s | CPU s | plan s (total - stages) | decompose s "
       "| mesh s | max RSS MiB |")
 print("|---|---|---|---|---|---|---|---|---|")

@@ -57,12 +57,10 @@ PY
     done
   done
 done
-python3 - "$out" <<'PY'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1], blank_line=False)
 runs = lines[1:]
 names = {"lake_superior": "Lake Superior", "texas": "Texas",
          "mesh2d_airfoil_3element": "airfoil (3 elements)", "guitar": "guitar"}

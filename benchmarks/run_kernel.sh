@@ -34,12 +34,10 @@ EOF
     done
   done
 done
-python3 - "$out" <<'EOF'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 print("| rep | domain | triangles | vertices | wall s | CPU s | us / triangle (wall) "
       "| us / triangle (CPU) | min angle | peak RSS MiB |")
 print("|---|---|---|---|---|---|---|---|---|---|")

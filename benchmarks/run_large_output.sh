@@ -50,12 +50,10 @@ record pdd-mesh "$dir/mesh.time" "$dir/mesh.json" "$(du -sb "$dir/out" | cut -f1
 /usr/bin/time -v -o "$dir/verify.time" nice -n 10 "$build/examples/drivers/pdd-verify" \
   "$dir/out/$index" "$input" --max-area "$area" --stats "$dir/verify.json" -q
 record pdd-verify "$dir/verify.time" "$dir/verify.json"
-python3 - "$out" <<'EOF'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 m, v = lines[1], lines[2]
 s, t = m["stats"], m["stats"]["timings"]
 cpu = lambda r: r["user_seconds"] + r["system_seconds"]

@@ -49,12 +49,10 @@ open(out, "a").write(json.dumps({"machine_load": {"other_work_cores": others,
                                                   "seconds": seconds,
                                                   "repeats": int(repeats)}}) + "\n")
 EOF
-python3 - "$out" <<'EOF'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
-lines = [json.loads(line) for line in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 load = next(l["machine_load"] for l in lines if "machine_load" in l)
 print("Shared machine: %.2f cores busy with other work over %.0f s; fastest of %d per run.\n" % (
     load["other_work_cores"], load["seconds"], load["repeats"]))

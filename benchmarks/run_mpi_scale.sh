@@ -54,12 +54,10 @@ for rep in $(seq "${REPS:-3}"); do
     record "$rep" "$p"
   done
 done
-python3 - "$out" <<'PY'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 runs = lines[1:]
 print("| run | program | P ranks | triangles | path s | mesh s | total s | CPU s | speed-up "
       "| imbalance | busy s per rank |")

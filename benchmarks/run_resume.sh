@@ -51,12 +51,10 @@ line = {"format": fmt, "subdomains": int(n), "max_area": area, "fraction": float
 open(out, "a").write(json.dumps(line) + "\n")
 EOF
 done
-python3 - "$out" <<'EOF'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 print("| triangles | N | format | clean wall s | clean CPU s | killed at s | killed exit "
       "| resumed wall s | resumed CPU s | pieces kept | pieces meshed | identical "
       "| (killed + resumed) / clean, wall |")

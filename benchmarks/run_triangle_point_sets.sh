@@ -54,12 +54,10 @@ for case in "m1 Q" "k100 Qq" "k100 Qqa0.00001" "r2 Q" "r2 Qq" "r2 Qqa0.002" "r2 
   run "pdd-triangle --threads 1" 0 "$1" "$2" "$pdd" -"$2" "$dir/$1.node" --threads 1
   run "pdd-triangle --threads 2" 0-1 "$1" "$2" "$pdd" -"$2" "$dir/$1.node" --threads 2
 done
-python3 - "$out" <<'PY'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 print("| input | switches | program | triangles | vs Triangle | wall s | CPU s | max RSS MiB |")
 print("|---|---|---|---|---|---|---|---|")
 runs = lines[1:]

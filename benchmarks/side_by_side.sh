@@ -79,12 +79,10 @@ side_by_side_runs() { # OUT EXE POLY AREA [TRIANGLE_EXE]
 }
 
 side_by_side_table() { # OUT
-  python3 - "$1" <<'EOF'
+  PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$1" <<'EOF'
 import json, sys
-lines = [json.loads(l) for l in open(sys.argv[1])]
-p = lines[0]["provenance"]
-print("Measured %s at commit `%s` on %s (load average at start %s); command: `%s`\n" % (
-    p["date"], p["commit"], p["machine"], p["load_average_at_start"], p["command"]))
+from raw_data import read_raw_data
+lines = read_raw_data(sys.argv[1])
 runs = lines[1:]
 print("| rep | run | threads | triangles | subdomains | path | wall s | CPU s | max RSS MiB "
       "| Triangle's wall / this wall |")
