@@ -6,6 +6,8 @@
 # without it every frame of a report is <null> (neither clang nor libclang-rt-14-dev pulls it in).
 # libopenmpi-dev and openmpi-bin (mpiexec) build and test the MPI backend (pdd-mesh-mpi).
 # help2man writes the programs' man pages from their --help (cmake/PddManPages.cmake).
+# file: cpack's DEB generator reads the binaries' types with it to find their shared libraries
+# (CPACK_DEBIAN_PACKAGE_SHLIBDEPS, cmake/PddPackaging.cmake); a minimal Debian has none.
 # python3-pip and python3-venv: `pip install .` and its check (scripts/check-pip-install.sh).
 # mkdocs and doxygen build the documentation site (the docs target, cmake/PddDocs.cmake);
 # librsvg2-bin (rsvg-convert) is for the graded tutorial's example, which CI runs with every
@@ -22,7 +24,7 @@ packages=(build-essential cmake ninja-build libcgal-dev libboost-graph-dev libtb
           libgtest-dev nlohmann-json3-dev libcli11-dev libmuparser-dev python3-meshio
           pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib
           python3-pip python3-venv mkdocs doxygen librsvg2-bin
-          clang libclang-rt-14-dev llvm-14 libopenmpi-dev openmpi-bin help2man)
+          clang libclang-rt-14-dev llvm-14 libopenmpi-dev openmpi-bin help2man file)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
