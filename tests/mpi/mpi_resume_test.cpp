@@ -95,6 +95,16 @@ void damage(const fs::path& out, pdd::index_t deleted, pdd::index_t truncated) {
 
 const std::string options16 = "--max-area 1e-4 --subdomains 16";
 
+/// The jobs that are killed: the pipe in 32 pieces, a clean run of about 3 s on 3 ranks in a
+/// release build on 2 cores, so that kills at fractions of it land among the pieces. Under
+/// AddressSanitizer (PDD_TEST_SANITIZED) a run at the same area takes 4x longer (8-10x on CI's
+/// machine, where the two kill tests then outlived their 600 s), and 5x the area keeps it short.
+#ifdef PDD_TEST_SANITIZED
+const std::string kill_options = "--max-area 1e-5 --subdomains 32";
+#else
+const std::string kill_options = "--max-area 2e-6 --subdomains 32";
+#endif
+
 // A clean pdd-mesh-mpi run on 3 ranks is pdd-mesh's directory, manifest included; with piece 3
 // deleted and piece 5 truncated, --resume on 3 ranks hands out those two subdomains only (2
 // meshings over all ranks, 14 pieces kept) and the directory equals the clean run's byte for
@@ -140,13 +150,13 @@ TEST(MpiResume, EitherProgramResumesTheOthersDirectory) {
 }
 
 // The launcher killed with SIGKILL at 3 fixed-seed moments between 25 and 75 % of a clean run's
-// wall time (the pipe at 2e-6 in 32 pieces on 3 ranks), then --resume on 3 ranks: the directory
+// wall time (kill_options on 3 ranks), then --resume on 3 ranks: the directory
 // equals the clean run's, every file; some killed job left pieces that were kept, and some was
 // interrupted (pieces meshed on resume). Open MPI's ranks notice the launcher's death and end by
 // themselves within about 2 s (a late kill may let them finish the job first).
 TEST(MpiResume, AJobWhoseLauncherIsKilledResumesToACleanRun) {
   const fs::path root = pdd::test::fresh_dir("mpi_resume_killed");
-  const std::string options = "--max-area 2e-6 --subdomains 32";
+  const std::string& options = kill_options;
   const fs::path clean = root / "clean";
   const auto t0 = std::chrono::steady_clock::now();
   ASSERT_EQ(mpi(3, options, clean).code, 0);
@@ -183,7 +193,7 @@ TEST(MpiResume, AJobWhoseLauncherIsKilledResumesToACleanRun) {
 // --resume on 3 ranks gives the clean run's directory; some kill interrupted the job.
 TEST(MpiResume, AJobWithOneRankKilledResumesToACleanRun) {
   const fs::path root = pdd::test::fresh_dir("mpi_resume_rank_killed");
-  const std::string options = "--max-area 2e-6 --subdomains 32";
+  const std::string& options = kill_options;
   const fs::path clean = root / "clean";
   const auto t0 = std::chrono::steady_clock::now();
   ASSERT_EQ(mpi(3, options, clean).code, 0);
