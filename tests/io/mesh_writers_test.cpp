@@ -446,7 +446,7 @@ TEST(WriteMesh, EmptyMarkersAreZeros) {
 
 // Region attributes (pdd-mesh -A): the .vtu's cell data "region_attribute" (Float64, after
 // "subdomain"), the .msh's physical tags (surfaces by attribute), the .ele's attribute column.
-TEST(RegionAttributes, VtuCellDataBlock) {
+TEST(RegionAttributeWriters, VtuCellDataBlock) {
   const auto m = pdd::test::small_mesh();
   const std::vector<double> attr = {1.5, 1.5, 1.5, 1.5, -2, -2, -2, 0.25};
   const auto p = pdd::test::temp_path("regions.vtu");
@@ -479,7 +479,7 @@ TEST(RegionAttributes, VtuCellDataBlock) {
   EXPECT_EQ(pdd::test::read_text(p).find("region_attribute"), std::string::npos);
 }
 
-TEST(RegionAttributes, MshSurfacesByAttributeAndEleColumn) {
+TEST(RegionAttributeWriters, MshSurfacesByAttributeAndEleColumn) {
   const auto m = pdd::test::small_mesh();
   const std::vector<double> attr = {5, 5, 5, -3, -3, -3, 5, 5};
   const auto p = pdd::test::temp_path("regions.msh");
@@ -507,7 +507,7 @@ TEST(RegionAttributes, MshSurfacesByAttributeAndEleColumn) {
   }
 }
 
-TEST(RegionAttributes, RefusedWhereTheyCannotBeWrittenAndNoFileIsLeft) {
+TEST(RegionAttributeWriters, RefusedWhereTheyCannotBeWrittenAndNoFileIsLeft) {
   const auto m = pdd::test::small_mesh();
   const auto dir = pdd::test::fresh_dir("region_refusals");
   const std::vector<double> half = {1, 2, 3, 4, 5, 6, 7, 8.5};
