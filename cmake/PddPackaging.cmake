@@ -13,8 +13,9 @@ set(CPACK_PACKAGE_CONTACT "The pdd developers")
 set(CPACK_PACKAGE_DESCRIPTION_SUMMARY "${PROJECT_DESCRIPTION}")
 set(CPACK_PACKAGE_DESCRIPTION "pdd meshes 2D domains with guaranteed quality in parallel: the \
 domain is split by the Medial Axis Domain Decomposition into subdomains meshed independently. \
-The package holds the programs (pdd-mesh, pdd-triangle, ...), the header-only C++20 library \
-with its CMake package (find_package(pdd)), the man pages and the pdd Python module. Licence: \
+The package holds the programs (pdd-mesh, pdd-triangle, ...), the C++20 library (libpdd and \
+its headers) with its CMake package (find_package(pdd): pdd::pdd, pdd::header_only), the man \
+pages and the pdd Python module. Licence: \
 pdd's own code is MIT; the programs and the module link CGAL's GPLv3+ packages (2D \
 Triangulation, Mesh_2), so the binaries are covered by the GPL (README.md, Licence).")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)

@@ -2,6 +2,9 @@
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/geometry/model_domains.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
+// the kernel compiled for a field of our own (libpdd holds it for pdd::any_sizing and
+// pdd::uniform_sizing only)
+#include <pdd/kernels/cgal/mesher_templates.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 

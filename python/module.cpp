@@ -9,6 +9,8 @@
 #include <pdd/generate.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
+// the kernel with python::grid_sizing (libpdd holds it for pdd::any_sizing and uniform_sizing)
+#include <pdd/kernels/cgal/mesher_templates.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/apply_shields.hpp>

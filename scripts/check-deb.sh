@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the Debian package of a configured and built build directory (`cpack -G DEB`,
 # cmake/PddPackaging.cmake) and checks its contents: every program the build made with its man
-# page, the headers (pdd/pdd.hpp and the generated pdd/version.hpp), the CMake package, the
+# page, the headers (pdd/pdd.hpp and the generated pdd/version.hpp), libpdd (unless the build
+# is header-only, PDD_HEADER_ONLY), the CMake package, the
 # Python module where Debian's python3 finds it (when the build has one), and the control
 # fields (Package, Version = project(VERSION), Depends). Prints the package's path, its Depends
 # and Recommends, and exits non-zero naming what is missing.
@@ -24,6 +25,12 @@ files=$(dpkg-deb -c "$deb" | awk '{print $6}' | sed 's|^\./|/|')
 expected=(/usr/include/pdd/pdd.hpp /usr/include/pdd/version.hpp
           /usr/lib/cmake/pdd/pddConfig.cmake /usr/lib/cmake/pdd/pddConfigVersion.cmake
           /usr/lib/cmake/pdd/pddTargets.cmake /usr/share/doc/pdd/copyright)
+# libpdd: libpdd.a, or libpdd.so with BUILD_SHARED_LIBS=ON
+if [ "$(cache PDD_HEADER_ONLY)" != ON ]; then
+  suffix=a
+  [ "$(cache BUILD_SHARED_LIBS)" = ON ] && suffix=so
+  expected+=("/usr/$(cache CMAKE_INSTALL_LIBDIR)/libpdd.$suffix")
+fi
 # the programs (examples/drivers/pdd_<name>.cpp, pdd-mesh-mpi with MPI) and their man pages
 programs=()
 if [ "$(cache PDD_BUILD_DRIVERS)" = ON ]; then

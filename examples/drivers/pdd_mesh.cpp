@@ -38,6 +38,7 @@
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/parallel/parallel_for.hpp>
+#include <pdd/pipeline.hpp>
 #include <pdd/pipeline/system.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/any_sizing.hpp>

@@ -2,52 +2,28 @@
 /// pdd::generate: the one-call path of the uniform decoupling method (dissertation ch. 6):
 /// decompose (MADD), decouple (Theorem 15, Lemma 9), mesh every subdomain in parallel and merge
 /// (or stream to a MeshSink).
+///
+/// This header is light: libpdd holds pdd::generate compiled for pdd::cgal::mesher and
+/// pdd::native::mesher with the default partitioner and the TBB executor, for any sink. A
+/// program that calls it with a kernel, partitioner or executor of its own also includes
+/// <pdd/pipeline/generate_templates.hpp> (in a header-only build, PDD_HEADER_ONLY, this header
+/// includes it).
 #pragma once
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
-#include <pdd/core/triangle_mesh.hpp>
+#include <pdd/core/pslg.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
-#include <pdd/mesh/merge.hpp>
-#include <pdd/parallel/parallel_for.hpp>
+#include <pdd/mesh/mesh_sink_ref.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
-#include <pdd/pipeline.hpp>
-#include <pdd/pipeline/system.hpp>
-
-#include <chrono>
-#include <utility>
+#include <pdd/pipeline/generate_entry.hpp>
+#include <pdd/pipeline/options.hpp>
+#include <pdd/pipeline/statistics.hpp>
 
 namespace pdd {
-
-/// The merged mesh and what it took.
-struct generate_result {
-  /// One conforming Delaunay mesh of the domain; triangle markers are subdomain ids (0 when
-  /// N == 1); segments are the mesh edges on input segments with their markers.
-  triangle_mesh mesh;
-  /// What the run took: subdomain and triangle counts, times per phase, the decoupling's
-  /// conditions (see generate_statistics).
-  generate_statistics statistics;
-};
-
-namespace detail {
-/// generate() on the calling thread's arena (see generate()).
-template <DelaunayMesher M, GraphPartitioner P, Executor E>
-generate_result generate_merged(const pslg& domain, const generate_options& options,
-                                const M& mesher, const P& partitioner) {
-  const auto t0 = std::chrono::steady_clock::now();
-  pipeline<M, P, E> pl(domain, options, mesher, partitioner);
-  pl.template check_memory<merge_sink>(); // up front, before any work
-  generate_result r;
-  r.mesh = pl.mesh_merged();
-  r.statistics = std::move(pl.statistics());
-  r.statistics.vertices = r.mesh.vertices.size();
-  r.statistics.timings.total = seconds_since(t0);
-  return r;
-}
-} // namespace detail
 
 /// Meshes the domain of `domain` with guaranteed quality by the uniform decoupling method:
 /// N subdomains by MADD (options.subdomains, 0: automatic_subdomains; 1: the kernel on the
@@ -70,9 +46,7 @@ template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitio
           Executor E = tbb_executor>
 generate_result generate(const pslg& domain, const generate_options& options = {},
                          const M& mesher = {}, const P& partitioner = {}) {
-  return with_threads(options.threads, [&] {
-    return detail::generate_merged<M, P, E>(domain, options, mesher, partitioner);
-  });
+  return detail::generate_merged<M, P, E>(domain, options, mesher, partitioner);
 }
 
 /// As generate(), but delivers each subdomain mesh to `sink` as soon as it is done (e.g. a
@@ -83,15 +57,11 @@ template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitio
           Executor E = tbb_executor, MeshSink S>
 generate_statistics generate(const pslg& domain, const generate_options& options, S& sink,
                              const M& mesher = {}, const P& partitioner = {}) {
-  return with_threads(options.threads, [&] {
-    const auto t0 = std::chrono::steady_clock::now();
-    pipeline<M, P, E> pl(domain, options, mesher, partitioner);
-    pl.template check_memory<S>(); // up front, before any work
-    pl.mesh(sink);
-    generate_statistics st = std::move(pl.statistics());
-    st.timings.total = seconds_since(t0);
-    return st;
-  });
+  return detail::generate_into<M, P, E>(domain, options, mesh_sink_ref(sink), mesher, partitioner);
 }
 
 } // namespace pdd
+
+#ifdef PDD_HEADER_ONLY
+#include <pdd/pipeline/generate_templates.hpp>
+#endif

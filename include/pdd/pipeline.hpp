@@ -17,10 +17,12 @@
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
+#include <pdd/mesh/mesh_sink_ref.hpp>
 #include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
 #include <pdd/pipeline/chain.hpp>
+#include <pdd/pipeline/compiled.hpp>
 #include <pdd/pipeline/detail/memory_check.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
 #include <pdd/pipeline/options.hpp>
@@ -31,6 +33,7 @@
 #include <pdd/sizing/mesh_size_estimate.hpp>
 
 #include <chrono>
+#include <concepts>
 #include <cstddef>
 #include <optional>
 #include <utility>
@@ -84,12 +87,17 @@ public:
   /// mesh; the message gives the estimate, the feature that causes it and the memory needed.
   template <MeshSink S>
   void check_memory() const {
+    check_memory(sink_retains_meshes<S>);
+  }
+  /// As check_memory<S>(), for a sink that keeps its meshes in memory or not
+  /// (`retains_meshes`, pdd::sink_retains_meshes).
+  void check_memory(bool retains_meshes) const {
     detail::check_size_plan({.triangles = planned_triangles(),
                              .estimate = &run_.plan.estimate,
                              .domain = &run_.domain,
                              .subdomains = stats_.subdomains,
                              .threads = stats_.threads,
-                             .retains_meshes = sink_retains_meshes<S>,
+                             .retains_meshes = retains_meshes,
                              .max_triangles = options_.max_triangles,
                              .check_memory = options_.check_memory});
   }
@@ -134,8 +142,19 @@ public:
   /// subdomain id, pdd::decoupling_error when invariance repairs run out.
   template <MeshSink S>
   const generate_statistics& mesh(S& sink) {
+    if constexpr (std::same_as<S, mesh_sink_ref>) {
+      return mesh_into(sink);
+    } else {
+      mesh_sink_ref ref(sink);
+      return mesh_into(ref);
+    }
+  }
+
+  /// mesh() into the sink `sink` refers to: every sink goes through this one function, so the
+  /// meshing stage is compiled once per kernel (libpdd holds it for the built-in ones).
+  const generate_statistics& mesh_into(mesh_sink_ref& sink) {
     decouple();
-    check_memory<S>();
+    check_memory(sink.referred_retains_meshes());
     const auto t0 = std::chrono::steady_clock::now();
     mesh_stage(*state_, run_, options_, mesher_, executor_, sink, stats_);
     stats_.timings.mesh = seconds_since(t0) - stats_.timings.merge;

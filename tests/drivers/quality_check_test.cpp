@@ -8,6 +8,8 @@
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
 #include <pdd/mesh/sinks.hpp>
+// pdd::generate with a kernel of the test's own: compiled here, not in libpdd
+#include <pdd/pipeline/generate_templates.hpp>
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,10 @@
 // Consumer of an installed pdd: reads a .poly, meshes it with the default kernel, verifies;
 // then meshes it again graded by a muParser expression (pdd::expression target) and verifies
-// the mesh against that field. It prints the installed pdd/version.hpp's version.
-#include <pdd/pdd.hpp>
+// the mesh against that field. It prints the installed pdd/version.hpp's version. It includes
+// the headers it uses (pdd/pdd.hpp would include every public header).
+#include <pdd/generate.hpp>
+#include <pdd/io/poly.hpp>
+#include <pdd/mesh/verify.hpp>
 #include <pdd/sizing/expression.hpp>
 #include <pdd/version.hpp>
 

@@ -10,6 +10,9 @@
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
+#include <pdd/pipeline.hpp>
+// pdd::generate with the sequential executor: compiled here, not in libpdd
+#include <pdd/pipeline/generate_templates.hpp>
 
 #include "mesh_compare.hpp"
 #include "test_support.hpp"

@@ -6,6 +6,8 @@
 #include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
+// pdd::generate with the sequential executor: compiled here, not in libpdd
+#include <pdd/pipeline/generate_templates.hpp>
 
 #include "mesh_compare.hpp"
 #include "verified.hpp"

@@ -4,7 +4,7 @@
 
 #include <pdd/core/index.hpp>
 #include <pdd/core/mesh_criteria.hpp>
-#include <pdd/decoupling/geometric_decompose.hpp>
+#include <pdd/decoupling/geometric_decompose_options.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/gradation_options.hpp>
 #include <pdd/madd/madd_options.hpp>

@@ -1,21 +1,15 @@
 /// \file mesher.hpp
 /// pdd::cgal::mesher: the default DelaunayMesher, over CGAL's constrained Delaunay
-/// triangulation and Mesh_2 Delaunay refinement.
+/// triangulation and Mesh_2 Delaunay refinement. This header declares it; its definition
+/// (CGAL's mesher behind it) is in kernels/cgal/mesher_templates.hpp, which a program includes
+/// to mesh with a SizingField of its own. libpdd holds it for pdd::any_sizing and
+/// pdd::uniform_sizing; in a header-only build (PDD_HEADER_ONLY) this header includes it.
 #pragma once
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/kernels/cgal/criteria.hpp>
-#include <pdd/kernels/cgal/detail/mesher.hpp>
-#include <pdd/kernels/detail/mesher_input.hpp>
-
-#include <CGAL/exceptions.h>
-
-#include <algorithm>
-#include <cmath>
-#include <exception>
-#include <string>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
 
 namespace pdd::cgal {
 
@@ -55,35 +49,13 @@ struct mesher {
   ///   vertices, bad or crossing segments, a vertex inside a segment, marker count mismatch,
   ///   criteria out of range) or when CGAL fails.
   template <SizingField S>
-  mesher_result mesh(const pslg& d, const mesh_criteria& criteria, const S& sizing) const {
-    check(d, criteria);
-    try {
-      return run(d, criteria, sizing);
-    } catch (const pdd::error&) {
-      throw;
-    } catch (const std::exception& e) {
-      throw meshing_error(-1, std::string("CGAL failed: ") + e.what());
-    }
-  }
-
-private:
-  static void check(const pslg& d, const mesh_criteria& c) { detail::check_mesher_input(d, c); }
-
-  template <SizingField S>
-  static mesher_result run(const pslg& d, const mesh_criteria& c, const S& sizing) {
-    namespace dm = detail::cgal_mesh;
-    dm::cdt tr;
-    const std::vector<dm::vertex_handle> vh = dm::build_cdt(tr, d);
-    if (tr.dimension() == 2) {
-      dm::mark_domain(tr, d.holes, d.rule);
-      if (d.rule == domain_rule::triangle) dm::release_outside_segments(tr, d.holes);
-      sizing_criteria<dm::cdt, S> crit(c.shape_bound(), c.max_area, sizing);
-      dm::refine(tr, crit);
-    }
-    return dm::extract(tr, d, vh);
-  }
+  mesher_result mesh(const pslg& d, const mesh_criteria& criteria, const S& sizing) const;
 };
 
 } // namespace pdd::cgal
 
 static_assert(pdd::DelaunayMesher<pdd::cgal::mesher>);
+
+#ifdef PDD_HEADER_ONLY
+#include <pdd/kernels/cgal/mesher_templates.hpp>
+#endif

@@ -1,18 +1,15 @@
 /// \file mesher.hpp
 /// pdd::native::mesher: a DelaunayMesher written for pdd (no CGAL triangulation): a
-/// triangle-array constrained Delaunay triangulation with Ruppert's refinement.
+/// triangle-array constrained Delaunay triangulation with Ruppert's refinement. This header
+/// declares it; its definition is in kernels/native/mesher_templates.hpp, which a program
+/// includes to mesh with a SizingField of its own. libpdd holds it for pdd::any_sizing and
+/// pdd::uniform_sizing; in a header-only build (PDD_HEADER_ONLY) this header includes it.
 #pragma once
 
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/sizing_field.hpp>
-#include <pdd/errors.hpp>
-#include <pdd/kernels/detail/mesher_input.hpp>
-#include <pdd/kernels/native/detail/build.hpp>
-#include <pdd/kernels/native/detail/extract.hpp>
-#include <pdd/kernels/native/detail/refine.hpp>
-
-#include <exception>
-#include <string>
+#include <pdd/core/mesh_criteria.hpp>
+#include <pdd/core/pslg.hpp>
 
 namespace pdd::native {
 
@@ -27,9 +24,9 @@ namespace pdd::native {
 /// hole regions); then refinement (detail/refine.hpp): encroached subsegments are split at
 /// their midpoints (on concentric shells next to an input vertex), bad triangles get their
 /// off-centres or circumcentres (kernels/detail/off_centre.hpp) from a bucketed queue, and a
-/// point that encroaches a subsegment is not inserted: the subsegment is split instead. A subsegment is encroached only by vertices on a
-/// domain side of it. Every geometric decision uses Epick's exact predicates (orientation,
-/// in-circle, angle); no epsilon decides topology.
+/// point that encroaches a subsegment is not inserted: the subsegment is split instead. A
+/// subsegment is encroached only by vertices on a domain side of it. Every geometric decision uses
+/// Epick's exact predicates (orientation, in-circle, angle); no epsilon decides topology.
 ///
 /// Small input angles: Ruppert's concentric shells and Shewchuk's rule (a triangle that is bad
 /// only in shape and whose shortest edge joins the two segments of an input angle below 60 deg
@@ -55,21 +52,13 @@ struct mesher {
   ///   vertices, bad or crossing segments, a vertex inside a segment, marker count mismatch,
   ///   criteria out of range) or bounds finer than the floating-point resolution.
   template <SizingField S>
-  mesher_result mesh(const pslg& d, const mesh_criteria& criteria, const S& sizing) const {
-    check(d, criteria);
-    namespace nm = detail::native_mesh;
-    nm::triangulation tr;
-    nm::cavity cav;
-    nm::build(tr, cav, d);
-    nm::segment_ids ids(d, tr.pts.size());
-    nm::refiner<S>(tr, cav, ids, d, criteria, sizing).run();
-    return nm::extract(tr, ids, d);
-  }
-
-private:
-  static void check(const pslg& d, const mesh_criteria& c) { detail::check_mesher_input(d, c); }
+  mesher_result mesh(const pslg& d, const mesh_criteria& criteria, const S& sizing) const;
 };
 
 } // namespace pdd::native
 
 static_assert(pdd::DelaunayMesher<pdd::native::mesher>);
+
+#ifdef PDD_HEADER_ONLY
+#include <pdd/kernels/native/mesher_templates.hpp>
+#endif
