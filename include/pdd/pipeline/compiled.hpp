@@ -44,6 +44,8 @@
       run_state, const planned_run&, const generate_options&, const default_partitioner&,          \
       const tbb_executor&, generate_statistics&)
 
+// explicit instantiation declarations (not API): hidden from Doxygen
+/// \cond
 #ifndef PDD_HEADER_ONLY
 namespace pdd {
 PDD_KERNEL_INSTANTIATIONS(extern template, cgal::mesher);
@@ -51,3 +53,4 @@ PDD_KERNEL_INSTANTIATIONS(extern template, native::mesher);
 PDD_STAGE_INSTANTIATIONS(extern template);
 } // namespace pdd
 #endif
+/// \endcond

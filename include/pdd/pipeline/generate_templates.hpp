@@ -61,9 +61,12 @@ generate_statistics generate_into(const pslg& domain, const generate_options& op
   PREFIX generate_statistics detail::generate_into<M, default_partitioner, tbb_executor>(          \
       const pslg&, const generate_options&, mesh_sink_ref, const M&, const default_partitioner&)
 
+// explicit instantiation declarations (not API): hidden from Doxygen
+/// \cond
 #ifndef PDD_HEADER_ONLY
 namespace pdd {
 PDD_GENERATE_INSTANTIATIONS(extern template, cgal::mesher);
 PDD_GENERATE_INSTANTIATIONS(extern template, native::mesher);
 } // namespace pdd
 #endif
+/// \endcond
