@@ -7,7 +7,10 @@
 #include <pdd/core/point.hpp>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <boost/geometry.hpp>
+// the parts it uses, not all of Boost.Geometry (<boost/geometry.hpp>: 125K more lines to parse)
+#include <boost/geometry/algorithms/disjoint.hpp>
+#include <boost/geometry/geometries/box.hpp>
+#include <boost/geometry/geometries/point_xy.hpp>
 #include <boost/geometry/index/rtree.hpp>
 #include <boost/iterator/function_output_iterator.hpp>
 
