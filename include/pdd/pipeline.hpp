@@ -33,7 +33,6 @@
 #include <pdd/sizing/mesh_size_estimate.hpp>
 
 #include <chrono>
-#include <concepts>
 #include <cstddef>
 #include <optional>
 #include <utility>
@@ -142,12 +141,8 @@ public:
   /// subdomain id, pdd::decoupling_error when invariance repairs run out.
   template <MeshSink S>
   const generate_statistics& mesh(S& sink) {
-    if constexpr (std::same_as<S, mesh_sink_ref>) {
-      return mesh_into(sink);
-    } else {
-      mesh_sink_ref ref(sink);
-      return mesh_into(ref);
-    }
+    mesh_sink_ref ref(sink); // a mesh_sink_ref is copied, not wrapped again
+    return mesh_into(ref);
   }
 
   /// mesh() into the sink `sink` refers to: every sink goes through this one function, so the
