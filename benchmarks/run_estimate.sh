@@ -3,7 +3,9 @@
 # (estimated_triangles, pdd::estimate_mesh_size) against the triangles the CGAL kernel makes
 # (--subdomains 1), on the shared geometries (quality only, and at a modest --max-area) and on
 # corridors and spikes written to a temporary folder; then the refusal of the issue-17 needle
-# with its time and peak memory (/usr/bin/time). A few seconds in all.
+# with its time and peak memory (/usr/bin/time); last, the estimate's own time
+# (benchmarks/bench_estimate: pdd::estimate_mesh_size alone, the fastest of 5 runs, pinned to
+# CPU 0) on the bundled pipe and key and on the Bahamas. A few seconds in all.
 # Raw data: benchmarks/results/estimate.jsonl (first line: the provenance, then one line per
 # run); the table and the needle's line are printed from it only.
 #   bash benchmarks/run_estimate.sh [BUILD_DIR]
@@ -64,13 +66,26 @@ line = {"input": "needle.poly", "max_area": "1.48e7", "exit_status": int(status)
         "cpu_seconds": float(user) + float(system), "max_rss_kib": int(rss)}
 open(out, "a").write(json.dumps(line) + "\n")
 EOF
+bench="$build/benchmarks/bench_estimate"
+[ -x "$bench" ] || cmake --build "$build" --target bench_estimate >/dev/null
+for g in examples/data/pipe.poly:1e-4 examples/data/key.poly:1e-4 \
+  "$data/bahamas_islands.poly:2e-4" "$data/bahamas_islands.poly:2e-5"; do
+  f="${g%%:*}"
+  if [ -f "$f" ]; then
+    taskset -c 0 "$bench" "$f" "${g##*:}" 5 | python3 -c '
+import json, os, sys
+j = json.load(sys.stdin)
+j["input"] = os.path.basename(j["input"])
+open(sys.argv[1], "a").write(json.dumps({"part": "estimate_time", **j}) + "\n")' "$out"
+  else echo "skip $f (absent)" >&2; fi
+done
 PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
 from raw_data import read_raw_data
 lines = read_raw_data(sys.argv[1])
 print("| input | --max-area | estimate | triangles made | estimate / made | wall s |")
 print("|---|---|---|---|---|---|")
-runs = [r for r in lines[1:] if "triangles" in r]
+runs = [r for r in lines[1:] if "triangles" in r and r.get("part") != "estimate_time"]
 for r in runs:
     e, t = r["estimated_triangles"], r["triangles"]
     print(f"| {r['input']} | {r['max_area']} | {e:.0f} | {t} | {e / t:.2f} | "
@@ -82,4 +97,11 @@ for r in lines[1:]:
         print(f"{r['input']}, --max-area {r['max_area']}: exit status {r['exit_status']}, "
               f"{r['wall_seconds']:.2f} s wall, {r['cpu_seconds']:.2f} s CPU, "
               f"{r['max_rss_kib'] / 1024:.1f} MiB max RSS\n\n```\n{r['message']}\n```")
+timed = [r for r in lines[1:] if r.get("part") == "estimate_time"]
+if timed:
+    print("\n| input | --max-area | input segments | pieces | estimate | seconds | CPU s |")
+    print("|---|---|---|---|---|---|---|")
+for r in timed:
+    print(f"| {r['input']} | {r['max_area']:g} | {r['input_segments']} | {r['pieces']} | "
+          f"{r['estimated_triangles']:.0f} | {r['seconds']:.3f} | {r['cpu_seconds']:.3f} |")
 EOF

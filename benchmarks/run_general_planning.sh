@@ -3,9 +3,15 @@
 # loops is decoupled from its faces): a wavy ring of N segments with a dangling crack and an
 # isolated well inside, meshed coarsely so that validation, the faces and MADD dominate.
 # Usage: benchmarks/run_general_planning.sh BUILD_DIR [N] [OLD_PDD_MESH]
-# OLD_PDD_MESH: a pdd-mesh of another commit, run alternately with this one (side by side).
-# Raw data: benchmarks/results/general-planning.jsonl (first line: the provenance, then one line
-# per run with its timings); the table is printed from it only.
+# OLD_PDD_MESH: a pdd-mesh of another commit, run alternately with this one (side by side);
+# benchmarks/build_at_commit.sh builds one (the pair in general-planning.md:
+#   bash benchmarks/run_general_planning.sh /var/tmp/pdd-at/69d83403dd/build/release 200000 \
+#     "$(bash benchmarks/build_at_commit.sh 2fb310a | tail -1)"
+# with 69d8340's build from the same script).
+# Raw data: benchmarks/results/general-planning.jsonl, or general-planning-pair.jsonl with
+# OLD_PDD_MESH (first line: the provenance, then one line per run with its timings and the
+# commit of the pdd-mesh that ran, where it is in a git worktree); the table is printed from it
+# only.
 set -euo pipefail
 build=${1:?build dir}
 n=${2:-200000}
@@ -13,6 +19,7 @@ old=${3:-}
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/general-planning.jsonl
+[ -z "$old" ] || out=benchmarks/results/general-planning-pair.jsonl
 provenance_json "bash benchmarks/run_general_planning.sh $*" >"$out"
 tmp=$(mktemp -d)
 poly="$tmp/ring.poly"
@@ -33,14 +40,15 @@ PY
 run() { # label rep exe
   /usr/bin/time -f "%e %U %S %M" -o "$tmp/time" "$3" "$poly" --max-area 1e-4 \
     --threads 1 --subdomains 8 --stats "$tmp/stats.json" -q
-  python3 - "$out" "$1" "$2" "$n" "$tmp" <<'PY'
+  python3 - "$out" "$1" "$2" "$n" "$tmp" \
+    "$(git -C "$(dirname "$3")" rev-parse --short=10 HEAD 2>/dev/null || echo unknown)" <<'PY'
 import json, sys
-out, label, rep, n, tmp = sys.argv[1:]
+out, label, rep, n, tmp, commit = sys.argv[1:]
 s = json.load(open(f"{tmp}/stats.json"))
 t = s["timings"]
 wall, user, system, rss = open(f"{tmp}/time").read().split()[-4:]
 stages = sum(t[k] for k in ("read", "decompose", "decouple", "mesh", "merge", "write"))
-line = {"binary": label, "rep": int(rep), "ring_segments": int(n), "triangles": s["triangles"],
+line = {"binary": label, "commit": commit, "rep": int(rep), "ring_segments": int(n), "triangles": s["triangles"],
         "subdomains": s["subdomains"], "path": s["path"], "wall_seconds": float(wall),
         "user_seconds": float(user), "cpu_seconds": float(user) + float(system),
         "max_rss_kib": int(rss), "plan_seconds": t["total"] - stages, "timings": t}
@@ -55,12 +63,12 @@ PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
 import json, sys
 from raw_data import read_raw_data
 lines = read_raw_data(sys.argv[1])
-print("| rep | pdd-mesh | triangles | wall s | CPU s | plan s (total - stages) | decompose s "
+print("| rep | pdd-mesh | commit | triangles | wall s | CPU s | plan s (total - stages) | decompose s "
       "| mesh s | max RSS MiB |")
-print("|---|---|---|---|---|---|---|---|---|")
+print("|---|---|---|---|---|---|---|---|---|---|")
 for r in lines[1:]:
     t = r["timings"]
-    print(f"| {r['rep']} | {r['binary']} | {r['triangles']} | {r['wall_seconds']:.2f} | "
+    print(f"| {r['rep']} | {r['binary']} | {r.get('commit', '-')} | {r['triangles']} | {r['wall_seconds']:.2f} | "
           f"{r['cpu_seconds']:.2f} | {r['plan_seconds']:.2f} | {t['decompose']:.2f} | "
           f"{t['mesh']:.2f} | {r['max_rss_kib'] // 1024} |")
 PY

@@ -7,9 +7,12 @@
 #   bash benchmarks/run_graded_shields.sh PDD_MESH TAG [FIELDS] [OUT_DIR]
 # FIELDS (default "graded steep const"): graded (F = a (1 + 30 u^2), u = x across the bounding
 # box), steep (a (1 + 999 u^2)) or const (F = a); a is set per geometry for about 0.2M-1M
-# triangles. Raw data: benchmarks/results/graded-shields.jsonl (first line: the provenance, then
-# one line per run); the tables are printed from it only. The --stats JSON of each run is kept
-# in OUT_DIR (default /tmp/graded-shields).
+# triangles. Raw data: benchmarks/results/graded-shields.jsonl for TAG main, else
+# graded-shields-TAG.jsonl (first line: the provenance, then one line per run); the tables are
+# printed from it only, and for a TAG other than main also its over-refinement beside main's
+# (the history of the shields: TAG 25fb814, a build of that commit by
+# benchmarks/build_at_commit.sh). The --stats JSON of each run is kept in OUT_DIR (default
+# /tmp/graded-shields).
 set -euo pipefail
 bin=${1:?usage: run_graded_shields.sh PDD_MESH TAG [FIELDS] [OUT_DIR]}
 tag=${2:?usage: run_graded_shields.sh PDD_MESH TAG [FIELDS] [OUT_DIR]}
@@ -18,7 +21,9 @@ dir=${4:-/tmp/graded-shields}
 mkdir -p "$dir"
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
-out=benchmarks/results/graded-shields.jsonl
+main_out=benchmarks/results/graded-shields.jsonl
+out=$main_out
+[ "$tag" = main ] || out=benchmarks/results/graded-shields-$tag.jsonl
 provenance_json "bash benchmarks/run_graded_shields.sh $*" >"$out"
 data=$(dirname "$0")/../../shared/data
 declare -A X=([lake_superior]=0.1 [texas]=-10664 [mesh2d_airfoil_3element]=0 [guitar]=0.5)
@@ -57,13 +62,20 @@ PY
     done
   done
 done
-PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
+PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" "$main_out" <<'PY'
 import json, sys
 from raw_data import read_raw_data
 lines = read_raw_data(sys.argv[1], blank_line=False)
 runs = lines[1:]
 names = {"lake_superior": "Lake Superior", "texas": "Texas",
          "mesh2d_airfoil_3element": "airfoil (3 elements)", "guitar": "guitar"}
+
+
+def f(value, spec=""):
+    """value formatted, or '-' where an older binary's --stats has no such field"""
+    return "-" if value is None else format(value, spec)
+
+
 for field in dict.fromkeys(r["field"] for r in runs):
     print(f"\n### Field `{field}`\n")
     print("| binary | geometry | N | subdomains | path | graded path | over % | triangles "
@@ -73,10 +85,10 @@ for field in dict.fromkeys(r["field"] for r in runs):
     for r in (r for r in runs if r["field"] == field):
         t = r["timings"]
         print(f"| {r['binary']} | {names.get(r['geometry'], r['geometry'])} | {r['n']} | "
-              f"{r['subdomains']} | {r['path']} | {r['graded_path']} | "
+              f"{r['subdomains']} | {f(r['path'])} | {f(r['graded_path'])} | "
               f"{r['over_refinement_pct']:.2f} | {r['triangles']} | "
-              f"{r['monolithic_triangles']} | {r['shielded_triangles']} | {t['mesh']:.2f} | "
-              f"{t['monolithic_comparison']:.2f} | {r['wall_seconds']:.2f} | "
+              f"{r['monolithic_triangles']} | {f(r['shielded_triangles'])} | {t['mesh']:.2f} | "
+              f"{f(t.get('monolithic_comparison'), '.2f')} | {r['wall_seconds']:.2f} | "
               f"{r['cpu_seconds']:.2f} | {r['max_rss_kib'] // 1024} |")
 verified = [r for r in runs if r["delaunay_violations"] is not None]
 if verified:
@@ -87,6 +99,20 @@ if verified:
     for r in verified:
         print(f"| {r['binary']} | {r['field']} | {names.get(r['geometry'], r['geometry'])} | "
               f"{r['triangles']} | {r['verified']} | {r['delaunay_violations']} | "
-              f"{r['conforming']} | {r['interface_splits']} | {r['max_area_ratio']:.6f} | "
-              f"{r['min_angle_unshielded_deg']:.2f} |")
+              f"{r['conforming']} | {f(r['interface_splits'])} | {f(r['max_area_ratio'], '.6f')} | "
+              f"{f(r['min_angle_unshielded_deg'], '.2f')} |")
+if sys.argv[1] != sys.argv[2]:
+    main = {(r["field"], r["geometry"], r["n"]): r
+            for r in (json.loads(l) for l in list(open(sys.argv[2]))[1:])}
+    print(f"\n### Over-refinement, {runs[0]['binary']} against main ({sys.argv[2]})\n")
+    print("| field | geometry | N | over % then | subdomains then | over % main "
+          "| subdomains main | graded path then / main |")
+    print("|---|---|---|---|---|---|---|---|")
+    for r in runs:
+        m = main.get((r["field"], r["geometry"], r["n"]))
+        if m:
+            print(f"| {r['field']} | {names.get(r['geometry'], r['geometry'])} | {r['n']} | "
+                  f"{r['over_refinement_pct']:.2f} | {r['subdomains']} | "
+                  f"{m['over_refinement_pct']:.2f} | {m['subdomains']} | "
+                  f"{f(r['graded_path'])} / {m['graded_path']} |")
 PY
