@@ -10,7 +10,8 @@
 # by a 1.9e-6 segment) streams its subdomain meshes to .vtu files in a temporary folder instead
 # of merging them in memory; its statistics come from pdd::statistics_sink. Writes JSON lines
 # to benchmarks/results/small-angles-<TRIANGLES>[-<GEOMETRIES>].jsonl (the suffix when
-# GEOMETRIES is given) and prints the markdown table.
+# GEOMETRIES is given; first line: the provenance, benchmarks/provenance.sh) and prints the
+# markdown table from it only (benchmarks/summarize_small_angles.py).
 set -euo pipefail
 build=${1:-build/release}
 target=${2:-2000000}
@@ -22,7 +23,9 @@ data=../shared/data
 exe="$build/examples/drivers/pdd-mesh"
 cmake --build "$build" --target pdd-mesh pdd-decompose >/dev/null
 out="benchmarks/results/small-angles-${target}${suffix}.jsonl"
-: > "$out"
+# shellcheck source=provenance.sh source-path=SCRIPTDIR
+source "$(dirname "$0")/provenance.sh"
+provenance_json "bash benchmarks/run_small_angles.sh $*" >"$out"
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 for g in $geometries; do
@@ -57,4 +60,4 @@ import json; print(json.load(open('$tmp/d.json')).get('split_points', 0))")
     run decoupled "$n" --verify
   fi
 done
-/usr/bin/python3 benchmarks/summarize_small_angles.py "$out"
+PYTHONPATH="$(dirname "$0")" /usr/bin/python3 benchmarks/summarize_small_angles.py "$out"

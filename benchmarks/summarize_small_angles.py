@@ -1,9 +1,11 @@
 """Prints the markdown table of benchmarks/results/small-angles.md from run_small_angles.sh's
-JSON lines: per geometry, the monolithic run and the decoupled run side by side."""
-import json
+JSON lines: per geometry, the monolithic run and the decoupled run side by side. The first line
+is the provenance (printed as the page's 'Measured ...' line)."""
 import sys
 
-rows = [json.loads(line) for line in open(sys.argv[1]) if line.strip()]
+from raw_data import read_raw_data
+
+rows = read_raw_data(sys.argv[1])[1:]
 print('| geometry | run | N | threads | triangles | over-refinement % | k | split points '
       '| shielded triangles | min input angle | min unshielded angle | max ratio unshielded '
       '| interface / shield splits | verified | time s | speed-up | peak RSS MiB |')
