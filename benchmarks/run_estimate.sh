@@ -99,9 +99,10 @@ for r in lines[1:]:
               f"{r['max_rss_kib'] / 1024:.1f} MiB max RSS\n\n```\n{r['message']}\n```")
 timed = [r for r in lines[1:] if r.get("part") == "estimate_time"]
 if timed:
-    print("\n| input | --max-area | input segments | pieces | estimate | seconds | CPU s |")
+    print("\n| input | --max-area | input segments | pieces | estimate | wall ms | CPU ms |")
     print("|---|---|---|---|---|---|---|")
 for r in timed:
     print(f"| {r['input']} | {r['max_area']:g} | {r['input_segments']} | {r['pieces']} | "
-          f"{r['estimated_triangles']:.0f} | {r['seconds']:.3f} | {r['cpu_seconds']:.3f} |")
+          f"{r['estimated_triangles']:.0f} | {1e3 * r['seconds']:.2f} | "
+          f"{1e3 * r['cpu_seconds']:.2f} |")
 EOF
