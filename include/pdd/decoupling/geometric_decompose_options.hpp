@@ -23,9 +23,9 @@ struct geometric_decompose_options {
   /// Why 1/32 (was 1/4) and 128 (was 64): a slower growth carries the small subdomains
   /// farther out, so the subdomains where the driver meets the user's bound are wide enough
   /// for the area term of k_i, and fewer rings of relation 7.1 hold k_i below it. Measured
-  /// (benchmarks/results/real-geometries.md): the Bahamas at 2M / 5M / 20M triangles
-  /// +7.0 / +2.4 / +0.85 % over the monolithic kernel (was +11.7 / +4.0 / +0.99 %), the
-  /// airfoil at 1M +4.3 % (was +5.5 %), Texas at 300K +2.3 % (was +3.3 %).
+  /// (benchmarks/results/real-geometries.md, benchmarks/run_geometric_history.sh): the Bahamas
+  /// at 2M / 5M / 20M triangles +7.1 / +2.4 / +0.85 % over the monolithic kernel (1/4 and 64:
+  /// +11.4 / +4.0 / +0.98 %), the airfoil at 1M +4.4 % (+5.4 %), Texas at 300K +2.3 % (+3.3 %).
   double first_slope = 1.0 / 32.0;
 };
 
