@@ -7,13 +7,17 @@
 #             --quiet (decoupled, automatic N; the checks and statistics included).
 # Each run is pinned to CPU 0 and sampled at 2 kHz (perf record -F 2000, no call graphs: a
 # function's own samples; what the compiler inlined counts in its caller).
-#   bash benchmarks/run_native_profiles.sh [BUILD_DIR]
+#   pdd-mesh-old: the same pdd-mesh command with OLD_PDD_MESH, a pdd-mesh of another commit
+#             (benchmarks/build_at_commit.sh; native-kernel.md's is 3c0f6e4, before the
+#             statistics without trigonometry), when it is given.
+#   bash benchmarks/run_native_profiles.sh [BUILD_DIR] [OLD_PDD_MESH]
 # Needs perf (Debian: linux-perf) and perf_event_paranoid <= 2. Raw data:
 # benchmarks/results/native-kernel-profiles.jsonl (first line: the provenance, then one line per
 # function over 0.5 % of a run's samples, with perf's full symbol); the tables are printed from
 # it only.
 set -euo pipefail
 build=${1:-build/release}
+old=${2:-}
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/native-kernel-profiles.jsonl
@@ -48,8 +52,9 @@ with open(out, "a") as f:
 PY
 }
 profile kernel "$bench" pipe 1000000 20.7048 native
-profile pdd-mesh "$build/examples/drivers/pdd-mesh" examples/data/pipe.poly --max-area 1.3e-6 \
-  --kernel native --threads 1 --quiet
+pdd_mesh_args=(examples/data/pipe.poly --max-area 1.3e-6 --kernel native --threads 1 --quiet)
+profile pdd-mesh "$build/examples/drivers/pdd-mesh" "${pdd_mesh_args[@]}"
+[ -z "$old" ] || profile pdd-mesh-old "$old" "${pdd_mesh_args[@]}"
 PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'PY'
 import re
 import sys
