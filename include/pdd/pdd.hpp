@@ -120,6 +120,7 @@
 #include <pdd/mesh/verification_report.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/mesh/verify_pieces.hpp>
+#include <pdd/mesh/verifying_sink.hpp>
 
 // level 8: pipeline
 #include <pdd/pipeline.hpp>

@@ -14,6 +14,7 @@
 #include <pdd/mesh/detail/verify_pieces.hpp>
 #include <pdd/mesh/quality_exemptions.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/sizing/any_sizing.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <limits>
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -87,18 +89,20 @@ struct pieces_report {
 namespace detail {
 
 /// The per-piece checks of pdd::verify (orientation, quality outside the triangles `exemptions`
-/// exempts (unless o.quality_exempt is given), area bound, duplicates, nonmanifold and locally
-/// Delaunay interior edges) on piece m; adds its counts and messages (prefixed with `name`) to r
-/// and returns the edge table, whose one-triangle edges are the piece's boundary.
+/// exempts (unless o.quality_exempt is given), area bound min(o.criteria.max_area, sizing),
+/// duplicates, nonmanifold and locally Delaunay interior edges) on piece m; adds its counts and
+/// messages (prefixed with `name`) to r and returns the edge table, whose one-triangle edges
+/// are the piece's boundary.
 inline verify_impl::edge_table check_piece(const triangle_mesh& m, const std::string& name,
                                            const quality_exemptions& exemptions,
-                                           const verify_options& o, pieces_report& r) {
+                                           const verify_options& o, const any_sizing& sizing,
+                                           pieces_report& r) {
   verify_options vo = o;
   if (!vo.quality_exempt) vo.quality_exempt = exemptions(m, o.criteria.min_angle_deg);
   verification_report local;
   violation_sink sink{local, o.max_reported};
-  const auto no_sizing = [](const point&) { return std::numeric_limits<double>::infinity(); };
-  const std::vector<std::uint8_t> flags = check_triangles(m, vo, no_sizing);
+  const auto bound_at = [&](const point& p) { return sizing.area_at(p); };
+  const std::vector<std::uint8_t> flags = check_triangles(m, vo, bound_at);
   report_triangles(m, flags, sink);
   report_duplicates(m, sink);
   std::vector<char> valid(flags.size());
@@ -194,6 +198,78 @@ inline void report_unmatched(const pieces_impl::open_edge_table& open, const psl
 
 } // namespace detail
 
+/// Verifies a per-subdomain mesh piece by piece as the pieces arrive, with pdd::verify_pieces'
+/// checks (which reads them from files through it; `pdd-mesh --verify --output-per-subdomain`
+/// gives it each subdomain mesh before it is written, pdd::verifying_sink): add() checks a
+/// piece alone and matches its boundary edges against the pieces added before; finish()
+/// reports the edges left unmatched and the area. `given` and `o` as for verify_pieces;
+/// `sizing` (optional) bounds the triangle areas with o.criteria.max_area, as pdd::verify's.
+/// Thread-safety: add() may run concurrently (a piece's own checks in parallel, the matching
+/// under a lock); the counts are the same in any order, the messages' order is that of the
+/// matching. Memory: the open boundary edges, as verify_pieces.
+class pieces_verifier {
+public:
+  /// \throws geometry_error as pdd::validate(given).
+  explicit pieces_verifier(const pslg& given, const verify_options& o = {}, any_sizing sizing = {})
+      : input_(o.rule_as_given ? given : domain_as_generated(given)), options_(o),
+        sizing_(std::move(sizing)), exemptions_(input_) {
+    report_.area_domain = domain_area(input_);
+  }
+
+  /// Checks piece number `piece` (distinct per piece; messages name it `name`).
+  void add(std::uint32_t piece, const std::string& name, const triangle_mesh& m) {
+    pieces_report own;
+    const auto table = detail::check_piece(m, name, exemptions_, options_, sizing_, own);
+    const std::scoped_lock lock(mutex_);
+    if (names_.size() <= piece) names_.resize(piece + 1);
+    names_[piece] = name;
+    count(m, own);
+    detail::match_boundary(m, table, piece, names_, open_, options_.max_reported, report_);
+  }
+
+  /// The report over the pieces added: the boundary edges still open are domain boundary (on an
+  /// input segment) or unmatched, and the areas must agree. Call once, after the last add().
+  pieces_report finish() {
+    const std::scoped_lock lock(mutex_);
+    pieces_report& r = report_;
+    detail::report_unmatched(open_, input_, names_, options_.max_reported, r);
+    r.area_ok =
+        std::abs(r.area_mesh - r.area_domain) <= options_.area_tolerance * std::abs(r.area_domain);
+    if (!r.area_ok && r.messages.size() < options_.max_reported)
+      r.messages.push_back("total area of the pieces " + std::to_string(r.area_mesh) +
+                           " differs from the domain area " + std::to_string(r.area_domain));
+    return r;
+  }
+
+private:
+  /// Adds a piece's own counts and messages (check_piece's) to the report.
+  void count(const triangle_mesh& m, const pieces_report& own) {
+    pieces_report& r = report_;
+    ++r.pieces;
+    r.triangles += m.triangles.size();
+    r.vertices += m.vertices.size();
+    r.largest_piece_triangles = std::max(r.largest_piece_triangles, m.triangles.size());
+    r.area_mesh += own.area_mesh;
+    r.delaunay_violations += own.delaunay_violations;
+    r.orientation_violations += own.orientation_violations;
+    r.duplicate_vertices += own.duplicate_vertices;
+    r.quality_violations += own.quality_violations;
+    r.area_violations += own.area_violations;
+    r.nonmanifold_edges += own.nonmanifold_edges;
+    for (const std::string& msg : own.messages)
+      if (r.messages.size() < options_.max_reported) r.messages.push_back(msg);
+  }
+
+  pslg input_;
+  verify_options options_;
+  any_sizing sizing_;
+  quality_exemptions exemptions_; // once, not per piece
+  std::mutex mutex_;
+  std::vector<std::string> names_; // by piece number
+  detail::pieces_impl::open_edge_table open_;
+  pieces_report report_;
+};
+
 /// Verifies the per-subdomain mesh indexed by the .pvtu or .pddi at `index` (the format told
 /// from the files, pdd::read_piece_index and pdd::read_piece) against the input PSLG
 /// `input` (the PSLG it meshes, read as pdd::verify reads it: pdd::domain_as_generated unless
@@ -215,30 +291,11 @@ inline void report_unmatched(const pieces_impl::open_edge_table& open, const psl
 /// geometry_error as pdd::validate(input). Complexity: O(total size) expected.
 inline pieces_report verify_pieces(const std::filesystem::path& index, const pslg& given,
                                    const verify_options& o = {}) {
-  const pslg input = o.rule_as_given ? given : domain_as_generated(given);
+  pieces_verifier verifier(given, o);
   const std::vector<std::filesystem::path> files = read_piece_index(index);
-  std::vector<std::string> names;
-  for (const auto& f : files)
-    names.push_back(f.filename().string());
-  pieces_report r;
-  r.area_domain = domain_area(input);
-  const quality_exemptions exemptions(input); // once, not per piece
-  detail::pieces_impl::open_edge_table open;
-  for (std::size_t k = 0; k < files.size(); ++k) {
-    const triangle_mesh m = read_piece(files[k]);
-    ++r.pieces;
-    r.triangles += m.triangles.size();
-    r.vertices += m.vertices.size();
-    r.largest_piece_triangles = std::max(r.largest_piece_triangles, m.triangles.size());
-    const auto table = detail::check_piece(m, names[k], exemptions, o, r);
-    detail::match_boundary(m, table, static_cast<std::uint32_t>(k), names, open, o.max_reported, r);
-  }
-  detail::report_unmatched(open, input, names, o.max_reported, r);
-  r.area_ok = std::abs(r.area_mesh - r.area_domain) <= o.area_tolerance * std::abs(r.area_domain);
-  if (!r.area_ok && r.messages.size() < o.max_reported)
-    r.messages.push_back("total area of the pieces " + std::to_string(r.area_mesh) +
-                         " differs from the domain area " + std::to_string(r.area_domain));
-  return r;
+  for (std::size_t k = 0; k < files.size(); ++k)
+    verifier.add(static_cast<std::uint32_t>(k), files[k].filename().string(), read_piece(files[k]));
+  return verifier.finish();
 }
 
 } // namespace pdd
