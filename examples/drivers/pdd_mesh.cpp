@@ -37,6 +37,7 @@
 #include <pdd/mesh/sinks.hpp>
 #include <pdd/mesh/statistics_sink.hpp>
 #include <pdd/mesh/verify.hpp>
+#include <pdd/mesh/verifying_sink.hpp>
 #include <pdd/parallel/parallel_for.hpp>
 #include <pdd/pipeline.hpp>
 #include <pdd/pipeline/system.hpp>
@@ -150,6 +151,7 @@ struct mesh_run {
   std::optional<pdd::mesh_statistics> st;
   std::optional<pdd::shielding_statistics> sst;
   std::optional<pdd::verification_report> report;
+  std::optional<pdd::pieces_report> pieces_report; ///< --verify with --output-per-subdomain
   std::optional<std::size_t> monolithic_triangles;
   std::size_t pieces_kept = 0, pieces_meshed = 0; ///< --output-per-subdomain (--resume)
   std::vector<double> attributes;                 ///< -A: the regional attribute of every triangle
@@ -179,6 +181,35 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
 }
 
+/// Meshes into `inner` through the quality check, the statistics and the progress bar.
+template <class Pipeline, pdd::MeshSink Inner>
+void mesh_checked(Pipeline& pl, Inner& inner, mesh_run& r, progress& bar) {
+  pdd::quality_check_sink checked(inner, r.domain, r.options.criteria, r.sizing);
+  pdd::statistics_sink measured(checked, r.domain, r.sizing);
+  progress_sink sink(measured, bar);
+  pl.mesh(sink);
+  r.st = measured.statistics();
+  r.sst = measured.shielding();
+}
+
+/// --verify with --output-per-subdomain: every piece verified in memory before it is written
+/// (pdd::verifying_sink: pdd-verify's checks, its interfaces as the neighbours arrive), the
+/// pieces that --resume kept read back from their files; t_verify sums the threads' time.
+template <class Pipeline>
+void mesh_verified(const cli_options& o, Pipeline& pl, pdd::resumable_piece_sink& files,
+                   mesh_run& r, progress& bar) {
+  pdd::pieces_verifier verifier(r.domain, {.criteria = r.options.criteria}, r.sizing);
+  const auto name = [&](pdd::index_t id) { return pdd::piece_file_name(id, o.format); };
+  pdd::verifying_sink verified(files, verifier, name);
+  mesh_checked(pl, verified, r, bar);
+  const auto t0 = std::chrono::steady_clock::now();
+  for (const pdd::index_t id : files.kept())
+    verifier.add(id, name(id),
+                 pdd::read_piece(std::filesystem::path(o.per_subdomain_dir) / name(id)));
+  r.pieces_report = verifier.finish();
+  r.t_verify = verified.seconds() + pdd::seconds_since(t0);
+}
+
 /// --output-per-subdomain: the plan first (its size estimate), the disk-space check on it, the
 /// output directory (pdd::drivers::prepare_output_directory: its manifest, with --resume the
 /// pieces kept), then the other meshes into files of the --format, each checked and measured on
@@ -201,11 +232,11 @@ void mesh_into_files(const cli_options& o, mesh_run& r, progress& bar) {
       [&](const pdd::piece_manifest& m) { pdd::drivers::save_manifest(dir, m); });
   pl.keep_subdomains(files.kept());
   bar.kept(files.kept().size());
-  pdd::quality_check_sink checked(files, r.domain, r.options.criteria, r.sizing);
-  pdd::statistics_sink measured(checked, r.domain, r.sizing);
-  progress_sink sink(measured, bar);
   try {
-    pl.mesh(sink);
+    if (o.verify)
+      mesh_verified(o, pl, files, r, bar);
+    else
+      mesh_checked(pl, files, r, bar);
   } catch (const pdd::error&) {
     files.remove_written(); // no index was written: leave no pieces of a failed run either
     std::error_code ec;     // best effort too; the run's own error is the one to report
@@ -217,8 +248,6 @@ void mesh_into_files(const cli_options& o, mesh_run& r, progress& bar) {
   r.gs.triangles = files.triangles(); // the kept pieces' and the new ones'
   r.pieces_kept = files.kept().size();
   r.pieces_meshed = files.meshed();
-  r.st = measured.statistics();
-  r.sst = measured.shielding();
 }
 
 /// Meshes into a merged mesh, or with --output-per-subdomain into files, measuring each
@@ -376,9 +405,15 @@ nlohmann::json region_attribute_stats(const std::vector<double>& attributes) {
 /// The verification, comparison, decomposition and timing part of the --stats JSON.
 void add_run_stats(const mesh_run& r, nlohmann::json& j) {
   if (!r.attributes.empty()) j["region_attributes"] = region_attribute_stats(r.attributes);
-  j["verified"] = r.report.has_value();
+  j["verified"] = r.report.has_value() || r.pieces_report.has_value();
   j["delaunay_violations"] = r.report ? nlohmann::json(r.report->delaunay_violations) : nullptr;
   j["conforming"] = r.report ? nlohmann::json(r.report->ok()) : nullptr;
+  if (r.pieces_report) { // the pieces' own edges and those across their interfaces
+    const pdd::pieces_report& p = *r.pieces_report;
+    j["delaunay_violations"] = p.delaunay_violations + p.interface_delaunay_violations;
+    j["conforming"] = p.ok();
+    j["interface_edges_verified"] = p.interface_edges;
+  }
   if (r.monolithic_triangles) {
     j["monolithic_triangles"] = *r.monolithic_triangles;
     j["over_refinement_pct"] =
@@ -393,7 +428,7 @@ void add_run_stats(const mesh_run& r, nlohmann::json& j) {
   j["timings"] = {{"read", r.t_read},  {"decompose", t.decompose}, {"decouple", t.decouple},
                   {"mesh", t.mesh},    {"merge", t.merge},         {"write", r.t_write},
                   {"total", r.t_total}};
-  if (r.report) j["timings"]["verify"] = r.t_verify;
+  if (r.report || r.pieces_report) j["timings"]["verify"] = r.t_verify;
   if (r.monolithic_triangles) j["timings"]["monolithic_comparison"] = r.t_monolithic;
   j["peak_rss_mib"] = pdd::peak_rss_mib();
 }
@@ -439,13 +474,14 @@ void write_outputs(const cli_options& o, const mesh_run& r) {
 
 /// The verification's outcome: its messages on stderr and verification_failed when it failed.
 int report_verification(const cli_options& o, const mesh_run& r) {
-  if (r.report && !r.report->ok()) {
+  const bool verified = r.report || r.pieces_report;
+  if ((r.report && !r.report->ok()) || (r.pieces_report && !r.pieces_report->ok())) {
     std::fprintf(stderr, "pdd-mesh: verification FAILED\n");
-    for (const auto& m : r.report->messages)
+    for (const auto& m : r.report ? r.report->messages : r.pieces_report->messages)
       std::fprintf(stderr, "  %s\n", m.c_str());
     return verification_failed;
   }
-  if (r.report && !o.quiet) std::printf("pdd-mesh: verification passed\n");
+  if (verified && !o.quiet) std::printf("pdd-mesh: verification passed\n");
   return ok;
 }
 
@@ -495,8 +531,10 @@ int main(int argc, char** argv) {
   pdd::drivers::add_version_flag(app, "pdd-mesh");
   auto* per = add_mesh_options(app, o, "threads (default: all cores)");
   app.add_option("-o,--output", o.output, "output mesh: .vtu, .node (+.ele/.poly), .msh, .svg");
-  auto* ver =
-      app.add_flag("--verify", o.verify, "verify Delaunay property, conformity, quality and area");
+  app.add_flag("--verify", o.verify,
+               "verify Delaunay property, conformity, quality and area (with "
+               "--output-per-subdomain: every piece in memory before it is written, and its "
+               "interfaces, as pdd-verify checks the files)");
   app.add_flag("--compare-monolithic", o.compare_monolithic,
                "also mesh the whole domain monolithically and report over_refinement_pct");
   auto* svg = app.add_option("--svg", o.svg, "draw the mesh to this SVG file");
@@ -515,7 +553,7 @@ int main(int argc, char** argv) {
       "physical tags (integer attributes)");
   pdd::drivers::add_resume_options(app, o.resume, per);
   auto* out = app.get_option("--output");
-  per->excludes(ver)->excludes(svg)->excludes(out)->excludes(win)->excludes(hist)->excludes(attr);
+  per->excludes(svg)->excludes(out)->excludes(win)->excludes(hist)->excludes(attr);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -90,6 +90,32 @@ TEST_P(PddVerify, PerSubdomainOutputsOfKeyAndPipePass) {
   }
 }
 
+TEST_P(PddVerify, PddMeshVerifiesItsPiecesInMemoryAsPddVerifyDoes) {
+  // pdd-mesh --verify --output-per-subdomain checks every piece before it is written
+  // (pdd::verifying_sink): the same interface edges as pdd-verify reading the files back.
+  for (const char* poly : {"key.poly", "pipe.poly"}) {
+    const fs::path dir = pdd::test::fresh_dir(std::string("inmem_") + format_name()) / "out";
+    const fs::path mesh_stats = dir.parent_path() / "mesh.json";
+    const auto m = run(PDD_MESH_EXE, pdd::test::bundled_data(poly).string() +
+                                         " --max-area 1e-3 --subdomains 16 --verify --format " +
+                                         format_name() + " --output-per-subdomain " + dir.string() +
+                                         " --stats " + mesh_stats.string());
+    ASSERT_EQ(m.code, 0) << m.output;
+    EXPECT_NE(m.output.find("verification passed"), std::string::npos) << m.output;
+    const fs::path verify_stats = dir.parent_path() / "verify.json";
+    const auto v = verify(dir, poly, "--max-area 1e-3 --stats " + verify_stats.string());
+    ASSERT_EQ(v.code, 0) << v.output;
+    std::ifstream mesh_in(mesh_stats), verify_in(verify_stats);
+    const auto jm = nlohmann::json::parse(mesh_in), jv = nlohmann::json::parse(verify_in);
+    EXPECT_EQ(jm["verified"], true) << poly;
+    EXPECT_EQ(jm["conforming"], true) << poly;
+    EXPECT_EQ(jm["delaunay_violations"], 0) << poly;
+    EXPECT_EQ(jm["interface_edges_verified"], jv["interface_edges"]) << poly;
+    EXPECT_GT(jm["interface_edges_verified"].get<std::size_t>(), 50u) << poly;
+    EXPECT_TRUE(jm["timings"].contains("verify")) << poly;
+  }
+}
+
 TEST_P(PddVerify, FindsAnEdgeFlippedAcrossAnInterface) {
   const fs::path dir = mesh_pieces("key.poly", "1e-3", "flip");
   auto pieces = pdd::test::read_all_pieces(index(dir));
