@@ -4,8 +4,10 @@
 # pdd-mesh on the bundled pipe with --output-per-subdomain on 2 threads, then pdd-verify on what
 # it wrote, both nice'd and timed with /usr/bin/time -v; the bytes on disk (du -sb); the output is
 # deleted afterwards. Raw data: benchmarks/results/scale-large-FORMAT-MAX_AREA.jsonl (first line:
-# the provenance, then one line for pdd-mesh and one for pdd-verify, with their --stats JSON);
-# the table is printed from it only.
+# the provenance, then one line for pdd-mesh and one for pdd-verify, with their --stats JSON,
+# and one for the same pdd-mesh run with --verify, which checks every piece in memory before
+# writing it: the cost of a verified run against the unverified one plus pdd-verify); the table
+# is printed from it only.
 #   bash benchmarks/run_large_output.sh [BUILD_DIR] [MAX_AREA] [FORMAT] [OUT_PARENT]
 # Defaults: build/release, 4.18e-8 (about 100 M triangles: 1.4 GB binary, about 170 s of CPU),
 # binary, /tmp (the output folder is made there and removed).
@@ -50,6 +52,11 @@ record pdd-mesh "$dir/mesh.time" "$dir/mesh.json" "$(du -sb "$dir/out" | cut -f1
 /usr/bin/time -v -o "$dir/verify.time" nice -n 10 "$build/examples/drivers/pdd-verify" \
   "$dir/out/$index" "$input" --max-area "$area" --stats "$dir/verify.json" -q
 record pdd-verify "$dir/verify.time" "$dir/verify.json"
+rm -rf "$dir/out"
+/usr/bin/time -v -o "$dir/mesh-verify.time" nice -n 10 "$build/examples/drivers/pdd-mesh" \
+  "$input" --max-area "$area" --threads 2 --format "$format" --output-per-subdomain "$dir/out" \
+  --verify --stats "$dir/mesh-verify.json" -q
+record "pdd-mesh --verify" "$dir/mesh-verify.time" "$dir/mesh-verify.json"
 PYTHONPATH="$(dirname "${BASH_SOURCE[0]}")" python3 - "$out" <<'EOF'
 import json, sys
 from raw_data import read_raw_data
@@ -84,4 +91,15 @@ print(f"| pdd-verify checked | {vs['pieces']:,} pieces, {vs['triangles']:,} tria
       f"{vs['delaunay_violations']}, interface Delaunay {vs['interface_delaunay_violations']}, "
       f"quality {vs['quality_violations']}, area {vs['area_violations']}, unmatched edges "
       f"{vs['unmatched_edges']} |")
+if len(lines) > 3:
+    mv = lines[3]
+    sv = mv["stats"]
+    print(f"| pdd-mesh --verify wall / CPU | {mv['wall_seconds']:.1f} s / {cpu(mv):.1f} s: "
+          f"{mv['wall_seconds'] / m['wall_seconds']:.2f}x the unverified run's wall time, "
+          f"{(mv['wall_seconds']) / (m['wall_seconds'] + v['wall_seconds']):.2f}x pdd-mesh + "
+          f"pdd-verify; the checks {sv['timings']['verify']:.1f} s summed over the threads; "
+          f"{sv['interface_edges_verified']:,} interface edges; "
+          f"{'**passed**' if sv['conforming'] else '**FAILED**'} |")
+    print(f"| pdd-mesh --verify peak RSS | {mv['max_rss_kib']:,} KB "
+          f"({mv['max_rss_kib'] / 1024:.1f} MiB) |")
 EOF
