@@ -88,6 +88,21 @@ struct pieces_report {
 
 namespace detail {
 
+/// Adds the per-piece violation counts of `from` (a verification_report or a pieces_report) to
+/// r, and its messages, prefixed, while r has fewer than max_reported.
+template <class Report>
+void add_piece_violations(pieces_report& r, const Report& from, const std::string& prefix,
+                          std::size_t max_reported) {
+  r.delaunay_violations += from.delaunay_violations;
+  r.orientation_violations += from.orientation_violations;
+  r.duplicate_vertices += from.duplicate_vertices;
+  r.quality_violations += from.quality_violations;
+  r.area_violations += from.area_violations;
+  r.nonmanifold_edges += from.nonmanifold_edges;
+  for (const std::string& msg : from.messages)
+    if (r.messages.size() < max_reported) r.messages.push_back(prefix + msg);
+}
+
 /// The per-piece checks of pdd::verify (orientation, quality outside the triangles `exemptions`
 /// exempts (unless o.quality_exempt is given), area bound min(o.criteria.max_area, sizing),
 /// duplicates, nonmanifold and locally Delaunay interior edges) on piece m; adds its counts and
@@ -113,14 +128,7 @@ inline verify_impl::edge_table check_piece(const triangle_mesh& m, const std::st
     e.on_segment = e.count == 1; // piece boundary edges: checked across the interfaces
   report_edges(m, table, check_edges(m, table), sink);
   r.area_mesh += mesh_area(m, flags);
-  r.delaunay_violations += local.delaunay_violations;
-  r.orientation_violations += local.orientation_violations;
-  r.duplicate_vertices += local.duplicate_vertices;
-  r.quality_violations += local.quality_violations;
-  r.area_violations += local.area_violations;
-  r.nonmanifold_edges += local.nonmanifold_edges;
-  for (const std::string& msg : local.messages)
-    if (r.messages.size() < o.max_reported) r.messages.push_back(name + ": " + msg);
+  add_piece_violations(r, local, name + ": ", o.max_reported);
   return table;
 }
 
@@ -250,14 +258,7 @@ private:
     r.vertices += m.vertices.size();
     r.largest_piece_triangles = std::max(r.largest_piece_triangles, m.triangles.size());
     r.area_mesh += own.area_mesh;
-    r.delaunay_violations += own.delaunay_violations;
-    r.orientation_violations += own.orientation_violations;
-    r.duplicate_vertices += own.duplicate_vertices;
-    r.quality_violations += own.quality_violations;
-    r.area_violations += own.area_violations;
-    r.nonmanifold_edges += own.nonmanifold_edges;
-    for (const std::string& msg : own.messages)
-      if (r.messages.size() < options_.max_reported) r.messages.push_back(msg);
+    detail::add_piece_violations(r, own, "", options_.max_reported);
   }
 
   pslg input_;
