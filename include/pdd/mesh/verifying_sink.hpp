@@ -32,6 +32,8 @@ public:
   /// The inner sink's: this decorator keeps no mesh itself.
   static constexpr bool retains_meshes = sink_retains_meshes<Inner>;
 
+  /// Verifies into `verifier`, naming subdomain id name(id) in its messages, then hands every
+  /// mesh to `inner`.
   verifying_sink(Inner& inner, pieces_verifier& verifier, std::function<std::string(index_t)> name)
       : inner_(inner), verifier_(verifier), name_(std::move(name)) {}
 
