@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -16,11 +17,14 @@
 namespace mesh_sink_ref_test {
 namespace {
 
-// Records every call, in order.
+// Records every call, in order. consume() may run on several threads at once (a sink's
+// contract, sinks.hpp), so it records under a lock.
 struct recording_sink {
+  std::mutex lock;
   std::vector<std::string> calls;
   void start(pdd::index_t n) { calls.push_back("start " + std::to_string(n)); }
   void consume(pdd::index_t id, pdd::triangle_mesh&& m) {
+    const std::lock_guard<std::mutex> held(lock);
     calls.push_back("consume " + std::to_string(id) + " " + std::to_string(m.triangles.size()));
   }
   void finish() { calls.push_back("finish"); }
