@@ -43,6 +43,7 @@
 #include <pdd/pipeline/system.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 #include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/domain_region.hpp>
 #include <pdd/sizing/min_sizing.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 #include <pdd/sizing/uniform.hpp>
@@ -145,7 +146,7 @@ struct mesh_run {
   /// What the mesh is measured and verified against: min(--max-area, the sizing fields).
   pdd::min_sizing<pdd::uniform_sizing, pdd::any_sizing> sizing{pdd::uniform_sizing{}, {}};
   std::string sizing_kind;         ///< names the fields for --stats ("none", "expression", ...)
-  pdd::sizing_bounds sizing_range; ///< the bounds of `sizing` over the domain's bounding box
+  pdd::sizing_bounds sizing_range; ///< the bounds of `sizing` over the domain (its faces)
   std::optional<pdd::triangle_mesh> mesh; ///< absent with --output-per-subdomain
   pdd::generate_statistics gs;
   std::optional<pdd::mesh_statistics> st;
@@ -178,7 +179,7 @@ void read_input(const cli_options& o, mesh_run& r) {
   r.t_read = pdd::seconds_since(t0);
   r.options = generate_options_for(o, r.domain, r.sizing_kind);
   r.sizing = pdd::min_sizing(pdd::uniform_sizing{o.max_area}, r.options.sizing);
-  r.sizing_range = pdd::sizing_range(r.sizing, r.props.box);
+  r.sizing_range = pdd::sizing_range(r.sizing, pdd::domain_region(r.domain).view());
 }
 
 /// Meshes into `inner` through the quality check, the statistics and the progress bar.

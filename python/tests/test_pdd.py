@@ -2,6 +2,7 @@
 sizing fields, determinism across thread counts, zero-copy arrays."""
 import os
 import pathlib
+import re
 import subprocess
 import sys
 
@@ -168,6 +169,30 @@ def test_sizing_callable_and_grid():
         pdd.mesh(sq["vertices"], sq["segments"], sizing=lambda x, y: 1 / 0)
     with pytest.raises(ValueError, match="subdomains must be 0 or 1"):
         pdd.mesh(sq["vertices"], sq["segments"], sizing=f, subdomains=4)
+
+
+def test_sizing_callable_is_only_evaluated_in_the_domain():
+    # the pipe's holes have radius 0.12: the field raises in the central one and is negative in
+    # the others, yet meshes (it is bounded over the domain, never its holes); a field that is
+    # negative in the domain is refused naming a point of it
+    pipe = read_poly("pipe.poly")
+    centres = [(0.5 * i, 0.5 * j) for i in (-1, 0, 1) for j in (-1, 0, 1)]
+
+    def f(x, y):
+        if x * x + y * y < 0.1 ** 2:
+            raise RuntimeError("evaluated in the central hole")
+        d = min(np.hypot(x - a, y - b) for a, b in centres)
+        return 2e-3 * (d - 0.08) / 0.04
+
+    r = pdd.mesh(pipe["vertices"], pipe["segments"], holes=pipe["holes"], sizing=f)
+    v, t = r["vertices"], r["triangles"]
+    c = v[t].mean(axis=1)
+    assert (areas(v, t) <= np.array([f(x, y) for x, y in c]) * (1 + 1e-12)).all()
+    with pytest.raises(ValueError, match="areas must be > 0") as e:
+        pdd.mesh(pipe["vertices"], pipe["segments"], holes=pipe["holes"],
+                 sizing=lambda x, y: x - 0.9)
+    x, y = map(float, re.search(r"at \(([-0-9.e]+), ([-0-9.e]+)\)", str(e.value)).groups())
+    assert x <= 0.9 and np.hypot(x, y) <= 1 and min(np.hypot(x - a, y - b) for a, b in centres) >= 0.11
 
 
 def test_arrays_are_views_of_one_mesh():

@@ -8,6 +8,7 @@
 
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -95,6 +96,22 @@ TEST(PddMeshSizing, ErrorsNameColumnLineOrRegion) {
   r = run_mesh(poly + " --sizing \"x-0.5\"");
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("must be > 0"), std::string::npos) << r.output;
+}
+
+// A field that vanishes inside the domain's hole (never in the domain) meshes at one and four
+// subdomains: the field is bounded over the domain, not its bounding box (issue 36 item 2).
+TEST(PddMeshSizing, AFieldThatVanishesInAHoleMeshes) {
+  const auto poly = write_text("holed.poly", "8 2 0 0\n1 0 0\n2 1 0\n3 1 1\n4 0 1\n"
+                                             "5 0.4 0.4\n6 0.6 0.4\n7 0.6 0.6\n8 0.4 0.6\n"
+                                             "8 0\n1 1 2\n2 2 3\n3 3 4\n4 4 1\n"
+                                             "5 5 6\n6 6 7\n7 7 8\n8 8 5\n1\n1 0.5 0.5\n");
+  for (const char* n : {"1", "4"}) {
+    const nlohmann::json j =
+        stats_of(poly + " --sizing \"1e-3*(sqrt((x-0.5)^2+(y-0.5)^2)-0.05)\" --subdomains " + n);
+    EXPECT_EQ(j["conforming"], true) << n;
+    EXPECT_LE(j["max_area_ratio"].get<double>(), 1.0) << n;
+    EXPECT_NEAR(j["gradation"].get<double>(), (std::sqrt(0.5) - 0.05) / 0.05, 0.5) << n;
+  }
 }
 
 } // namespace

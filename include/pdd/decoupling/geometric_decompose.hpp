@@ -107,8 +107,18 @@ public:
   /// Bounds over the closed box b: min(max_area, f)'s range, and per feature the driver's
   /// bound at the nearest (lo) and farthest (hi) point of the box from it (see the class
   /// comment).
-  sizing_bounds range(const bbox& b) const {
-    sizing_bounds r = data_->base.range(b);
+  sizing_bounds range(const bbox& b) const { return with_features(data_->base.range(b), b); }
+  /// Bounds over the closed region r: f's over the region (evaluated only there), the
+  /// features' over its box.
+  sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const {
+    return with_features(data_->base.range(r, o), r.box());
+  }
+  /// "feature_driven": the field's name in reports (any_sizing::kind, min_sizing::kind).
+  static constexpr const char* kind() noexcept { return "feature_driven"; }
+
+private:
+  /// f's bounds `r` capped by max_area and by each feature's bound over box b.
+  sizing_bounds with_features(sizing_bounds r, const bbox& b) const {
     r = {std::min(r.lo, data_->max_area), std::min(r.hi, data_->max_area)};
     for (std::size_t i = 0; i < data_->at.size(); ++i) {
       const point q = data_->at[i];
@@ -121,10 +131,7 @@ public:
     }
     return r;
   }
-  /// "feature_driven": the field's name in reports (any_sizing::kind, min_sizing::kind).
-  static constexpr const char* kind() noexcept { return "feature_driven"; }
 
-private:
   /// The e = gap/2 + slope * distance at which bound reaches `area`, slightly enlarged.
   static double reach_of(double area) {
     return std::sqrt(area / (4.0 * std::numbers::sqrt2)) * (1.0 + 1e-9);

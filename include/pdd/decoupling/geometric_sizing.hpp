@@ -15,6 +15,7 @@
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/parallel/sequential_executor.hpp>
 #include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/domain_region.hpp>
 #include <pdd/sizing/geometric_bound.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>
 #include <pdd/sizing/mesh_size_estimate.hpp>
@@ -100,16 +101,12 @@ inline geometric_piece measure_geometric_piece(const decomposition& d, std::size
                                                const any_sizing& f, double max_area) {
   geometric_piece p;
   pslg g;
-  pdd::bbox box;
-  for (const auto& loop : subdomain_points(d, s)) {
+  for (const auto& loop : subdomain_points(d, s))
     g.add_loop(loop);
-    for (const point& q : loop)
-      box = {std::min(box.xmin, q.x), std::min(box.ymin, q.y), std::max(box.xmax, q.x),
-             std::max(box.ymax, q.y)};
-  }
-  const sizing_bounds r = f ? sizing_range(f, box) : sizing_bounds{max_area, max_area};
-  p.bounds = {std::min(max_area, r.lo), std::min(max_area, r.hi)};
   const std::vector<domain_triangle> triangles = domain_faces(g).triangles();
+  const sizing_bounds r = f ? sizing_range(f, domain_region(g.vertices, triangles).view())
+                            : sizing_bounds{max_area, max_area};
+  p.bounds = {std::min(max_area, r.lo), std::min(max_area, r.hi)};
   for (const domain_triangle& t : triangles)
     p.triangles.push_back(t.vertices);
   p.expected = inverse_area_integral(g.vertices, triangles, max_area, f, f ? 1024 : 1) /

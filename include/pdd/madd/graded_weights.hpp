@@ -11,6 +11,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/madd/detail/graded.hpp>
 #include <pdd/madd/split_policy.hpp>
+#include <pdd/sizing/domain_region.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 
 #include <algorithm>
@@ -265,17 +266,18 @@ madd_split_policy density_weight_policy(Weights weights, const graded_madd_optio
 }
 
 /// The required area of each leaf for the area-ratio rule (4.4): a true lower bound of the
-/// required-area function F over the leaf's bounding box, pdd::sizing_range(F, box).lo (exact
-/// from the nodes for background meshes and grids; for callables the documented grid rule).
-/// The dissertation takes the minimum of F at the background points inside the subdomain;
-/// the lower bound over the box is never larger, so the rule below holds for every point of
-/// every final subdomain, not only at the sample points. Infinity where F sets no bound.
+/// required-area function F over the leaf itself, pdd::sizing_range(F, region).lo (from the
+/// nodes around its box for background meshes and grids; for callables the documented grid
+/// rule with samples in the leaf only). The dissertation takes the minimum of F at the
+/// background points inside the subdomain; the lower bound over the leaf is never larger, so
+/// the rule below holds for every point of every final subdomain, not only at the sample
+/// points. Infinity where F sets no bound.
 template <SizingField F>
 std::vector<double> required_areas(const F& f, std::span<const madd_leaf_view> leaves) {
   std::vector<double> r;
   r.reserve(leaves.size());
   for (const auto& l : leaves)
-    r.push_back(sizing_range(f, detail::loops_box(l.loops)).lo);
+    r.push_back(sizing_range(f, loops_region(l.loops).view()).lo);
   return r;
 }
 

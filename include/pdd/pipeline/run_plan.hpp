@@ -111,16 +111,15 @@ inline mesh_path decoupled_path(const generate_options& o, bool geometric) {
 /// (options.subdomains; 0: automatic_subdomains of the estimate when some area bound is given,
 /// 1 without any; a general domain at least one per face) and the path: monolithic for N = 1,
 /// geometric where detail::choose_geometric_path says so, uniform where k is set, else graded.
-/// \pre check_generate_options(o) passed. \throws pdd::geometry_error for an invalid domain.
-/// Complexity: validation and the estimate.
+/// \pre check_generate_options(o) passed. \throws pdd::geometry_error for an invalid domain;
+/// pdd::sizing_error for a field that is not positive in the domain (read_domain).
+/// Complexity: validation, the field's bounds and the estimate.
 inline planned_run plan_run(pslg domain, const generate_options& o, unsigned threads) {
   planned_run r;
   run_plan& p = r.plan;
-  const double sizing_min = o.sizing ? sizing_range(o.sizing, bounding_box(domain)).lo
-                                     : std::numeric_limits<double>::infinity();
+  detail::domain_reading read = detail::read_domain(domain, o);
   p.decoupling_criteria = o.criteria;
-  p.decoupling_criteria.max_area = std::min(o.criteria.max_area, sizing_min);
-  detail::domain_reading read = detail::read_domain(domain, o, p.decoupling_criteria.max_area);
+  p.decoupling_criteria.max_area = std::min(o.criteria.max_area, read.sizing_min);
   r.domain = std::move(domain);
   r.regions = std::move(read.start);
   p.general_domain = read.general;

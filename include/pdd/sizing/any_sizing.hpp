@@ -5,6 +5,7 @@
 
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/sizing/sizing_range.hpp>
+#include <pdd/sizing/sizing_region.hpp>
 
 #include <limits>
 #include <memory>
@@ -47,6 +48,13 @@ public:
       return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
     return impl_->range(b, o);
   }
+  /// Bounds of the held field over the closed region r (pdd::sizing_range over the region:
+  /// evaluated only in the region); {infinity, infinity} when empty.
+  sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const {
+    if (!impl_)
+      return {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity()};
+    return impl_->range(r, o);
+  }
   /// The held field's name: its own kind(), "callable" when it has none, "none" when empty.
   std::string kind() const { return impl_ ? impl_->kind() : "none"; }
 
@@ -55,6 +63,7 @@ private:
     virtual ~base() = default;
     virtual double area_at(const point& p) const = 0;
     virtual sizing_bounds range(const bbox& b, const sizing_range_options& o) const = 0;
+    virtual sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const = 0;
     virtual std::string kind() const = 0;
   };
   template <class F>
@@ -63,6 +72,9 @@ private:
     double area_at(const point& p) const override { return static_cast<double>(field.area_at(p)); }
     sizing_bounds range(const bbox& b, const sizing_range_options& o) const override {
       return sizing_range(field, b, o);
+    }
+    sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const override {
+      return sizing_range(field, r, o);
     }
     std::string kind() const override {
       if constexpr (requires { field.kind(); })

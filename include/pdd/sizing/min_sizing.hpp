@@ -5,6 +5,7 @@
 
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/sizing/sizing_range.hpp>
+#include <pdd/sizing/sizing_region.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -41,6 +42,18 @@ requires(sizeof...(Fs) > 0) struct min_sizing {
                           std::numeric_limits<double>::infinity()};
           ((r = combine(r, sizing_range(f, b, o))), ...);
           return r;
+        },
+        fields);
+  }
+  /// {min_i lo_i, min_i hi_i} over the closed region r, each field's bounds from
+  /// pdd::sizing_range over the region.
+  sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const {
+    return std::apply(
+        [&](const auto&... f) {
+          sizing_bounds b{std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::infinity()};
+          ((b = combine(b, sizing_range(f, r, o))), ...);
+          return b;
         },
         fields);
   }

@@ -10,6 +10,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/sizing/any_sizing.hpp>
 #include <pdd/sizing/background_mesh.hpp>
+#include <pdd/sizing/sizing_region.hpp>
 
 #include <algorithm>
 #include <array>
@@ -64,12 +65,12 @@ public:
   sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
   /// range with pdd::sizing_range's options for the base field.
   sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
-    sizing_bounds base = data_->base.range(b, o);
-    base.lo = std::min(base.lo, data_->max_area);
-    base.hi = std::min(base.hi, data_->max_area);
-    sizing_bounds s = data_->located.range(b);
-    if (!std::isfinite(s.lo)) s = {data_->min_scale, data_->min_scale};
-    return {base.lo * s.lo, base.hi * std::max(s.hi, s.lo)};
+    return scaled(data_->base.range(b, o), b);
+  }
+  /// Bounds of F over the closed region r: the base field's bounds over the region (evaluated
+  /// only there), the scales of the triangles meeting the region's box.
+  sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const {
+    return scaled(data_->base.range(r, o), r.box());
   }
 
   /// "geometric" (the field of the geometric graded method, Algorithm 8.3): its name in
@@ -93,6 +94,15 @@ private:
     std::vector<sizing_bounds> bounds;
     double min_scale;
   };
+
+  /// The bounds of min(max_area, f) given as `base`, times the scales over box b.
+  sizing_bounds scaled(sizing_bounds base, const bbox& b) const {
+    base.lo = std::min(base.lo, data_->max_area);
+    base.hi = std::min(base.hi, data_->max_area);
+    sizing_bounds s = data_->located.range(b);
+    if (!std::isfinite(s.lo)) s = {data_->min_scale, data_->min_scale};
+    return {base.lo * s.lo, base.hi * std::max(s.hi, s.lo)};
+  }
 
   static background_mesh_sizing build(std::vector<point> vertices,
                                       std::vector<std::array<index_t, 3>> triangles,

@@ -1,9 +1,12 @@
 /// \file sizing_range.hpp
-/// pdd::sizing_range: m(D) and M(D) of any SizingField over a box (dissertation 7.3-7.5).
+/// pdd::sizing_range: m(D) and M(D) of any SizingField over a region or a box (dissertation
+/// 7.3-7.5).
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/sizing/detail/sampled_range.hpp>
+#include <pdd/sizing/detail/sampled_region_range.hpp>
+#include <pdd/sizing/sizing_region.hpp>
 
 #include <concepts>
 #include <cstddef>
@@ -35,9 +38,17 @@ concept RangeWithOptions = requires(const F& f, const bbox& b, const sizing_rang
   { f.range(b, o) } -> std::convertible_to<sizing_bounds>;
 };
 
-/// Bounds lo <= F(p) <= hi over the closed box `b` (the customisation point of the graded
-/// method's m(D) and M(D); pass a subdomain's bounding box: a bound over the box bounds the
-/// subdomain too).
+/// A field that bounds itself over a region (any_sizing, min_sizing and the pipeline's derived
+/// fields, which forward to the fields they hold) answers range(region, options).
+template <class F>
+concept RegionRangeWithOptions = requires(const F& f, const sizing_region& r,
+                                          const sizing_range_options& o) {
+  { f.range(r, o) } -> std::convertible_to<sizing_bounds>;
+};
+
+/// Bounds lo <= F(p) <= hi over the closed box `b`. The pipeline bounds fields over regions
+/// (the overload below): a field need only be positive and finite on the domain, while over a
+/// box it must be so in the holes and around the domain too.
 ///
 /// A BoundedSizingField answers with its own f.range(b) (exact from nodes for background
 /// meshes and grids, exact for uniform fields). Any other SizingField (a callable, an
@@ -65,6 +76,36 @@ sizing_bounds sizing_range(const F& f, const bbox& b, const sizing_range_options
     return f.range(b);
   else
     return detail::sampled_range(f, b, o.cells, o.mesh_resolution);
+}
+
+/// Bounds lo <= F(p) <= hi over the closed region `r` (the customisation point of the graded
+/// method's m(D) and M(D): the pipeline passes the domain or subdomain itself, so a field is
+/// evaluated only where the mesh will be, never in a hole or outside the domain).
+///
+/// A field with range(region, options) answers it; a BoundedSizingField answers f.range over
+/// the region's bounding box (its bound over the box bounds the region too; those fields are
+/// positive everywhere by construction). Any other SizingField is evaluated on the grid rule of
+/// the box overload over the region's box, with samples in the region only: the grid nodes
+/// that lie in the closed region (exact orientation tests against its triangles) and, in every
+/// cell the region's boundary crosses, the boundary's crossings of the cell's sides and the
+/// boundary vertices in it. Each cell that meets the region contributes lo = (smallest sample)
+/// - 2 (Dxx + Dyy) / 8 and hi = (largest sample) + 2 (Dxx + Dyy) / 8, Dxx and Dyy the largest
+/// |second differences| along x and y around the cell among the nodes in the region; the grid
+/// is refined x4 (to 1024 cells a side) while no positive lower bound results.
+/// \tparam F a SizingField. \throws pdd::sizing_error naming a point of the region where the
+/// value is <= 0 or NaN, or when no positive lower bound results at 1024 cells. An empty region
+/// gives {inf, inf}. Complexity: O(cells^2 + T rows) for fields without a range (T the
+/// region's triangles). Thread-safe when F is.
+template <SizingField F>
+sizing_bounds sizing_range(const F& f, const sizing_region& r, const sizing_range_options& o = {}) {
+  if constexpr (RegionRangeWithOptions<F>)
+    return f.range(r, o);
+  else if constexpr (RangeWithOptions<F>)
+    return f.range(r.box(), o);
+  else if constexpr (BoundedSizingField<F>)
+    return f.range(r.box());
+  else
+    return detail::sampled_region_range(f, r, o.cells, o.mesh_resolution);
 }
 
 } // namespace pdd

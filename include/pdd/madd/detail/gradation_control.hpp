@@ -10,6 +10,7 @@
 #include <pdd/madd/split_policy.hpp>
 #include <pdd/parallel/parallel_for.hpp>
 #include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/domain_region.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 
@@ -50,15 +51,13 @@ struct leaf_measuring {
 
   /// \pre loops[0] is the outer loop (points, any orientation), loops[1..] the holes.
   leaf_measure operator()(std::span<const std::vector<point>> loops) const {
-    pdd::bbox b;
-    for (const point& p : loops.front())
-      b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x),
-           std::max(b.ymax, p.y)};
-    const sizing_bounds r = sizing_range(field, b, range_options);
     pslg g;
     for (const auto& loop : loops)
       g.add_loop(loop);
-    const double integral = inverse_area_integral(g, max_area, field, samples);
+    const std::vector<domain_triangle> triangles = domain_faces(g).triangles();
+    const sizing_bounds r =
+        sizing_range(field, domain_region(g.vertices, triangles).view(), range_options);
+    const double integral = inverse_area_integral(g.vertices, triangles, max_area, field, samples);
     return {std::min(max_area, r.lo), std::min(max_area, r.hi), integral / mean_area_fraction};
   }
 };

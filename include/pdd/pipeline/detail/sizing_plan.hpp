@@ -10,8 +10,10 @@
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/domain_faces.hpp>
+#include <pdd/madd/subdomain_region.hpp>
 #include <pdd/pipeline/planning.hpp>
 #include <pdd/sizing/any_sizing.hpp>
+#include <pdd/sizing/domain_region.hpp>
 #include <pdd/sizing/inverse_area_integral.hpp>
 #include <pdd/sizing/mesh_size_estimate.hpp>
 #include <pdd/sizing/sizing_range.hpp>
@@ -48,23 +50,16 @@ inline mesh_size_estimate estimate_faces(const pslg& domain, const domain_faces&
   return e;
 }
 
-/// m(D_i) for every subdomain: pdd::sizing_range's lower bound over the subdomain's bounding
-/// box, computed on the executor (one job per subdomain). Thread-safe as the field is.
+/// m(D_i) for every subdomain: pdd::sizing_range's lower bound over the subdomain itself (the
+/// field is evaluated only in it), computed on the executor (one job per subdomain). Thread-safe as
+/// the field is.
 template <Executor E>
 std::vector<double> subdomain_sizing_minima(const decomposition& d, const any_sizing& sizing,
                                             const E& executor) {
   const std::size_t m = d.subdomains.size();
   std::vector<double> lo(m), work(m, 1.0);
-  executor.run(work, [&](index_t s) {
-    pdd::bbox b;
-    for (const auto& loop : d.subdomains[s].loops)
-      for (const index_t v : loop) {
-        const point& p = d.vertices[v];
-        b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x),
-             std::max(b.ymax, p.y)};
-      }
-    lo[s] = sizing_range(sizing, b).lo;
-  });
+  executor.run(work,
+               [&](index_t s) { lo[s] = sizing_range(sizing, subdomain_region(d, s).view()).lo; });
   return lo;
 }
 
