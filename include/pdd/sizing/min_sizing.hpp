@@ -36,26 +36,12 @@ requires(sizeof...(Fs) > 0) struct min_sizing {
   sizing_bounds range(const bbox& b) const { return range(b, sizing_range_options{}); }
   /// range with pdd::sizing_range's options for every field.
   sizing_bounds range(const bbox& b, const sizing_range_options& o) const {
-    return std::apply(
-        [&](const auto&... f) {
-          sizing_bounds r{std::numeric_limits<double>::infinity(),
-                          std::numeric_limits<double>::infinity()};
-          ((r = combine(r, sizing_range(f, b, o))), ...);
-          return r;
-        },
-        fields);
+    return combined_range(b, o);
   }
   /// {min_i lo_i, min_i hi_i} over the closed region r, each field's bounds from
   /// pdd::sizing_range over the region.
   sizing_bounds range(const sizing_region& r, const sizing_range_options& o) const {
-    return std::apply(
-        [&](const auto&... f) {
-          sizing_bounds b{std::numeric_limits<double>::infinity(),
-                          std::numeric_limits<double>::infinity()};
-          ((b = combine(b, sizing_range(f, r, o))), ...);
-          return b;
-        },
-        fields);
+    return combined_range(r, o);
   }
   /// "min(kind_1, kind_2, ...)".
   std::string kind() const {
@@ -69,6 +55,18 @@ requires(sizeof...(Fs) > 0) struct min_sizing {
   }
 
 private:
+  /// {min_i lo_i, min_i hi_i} of pdd::sizing_range(F_i, where, o): `where` a box or a region.
+  template <class Where>
+  sizing_bounds combined_range(const Where& where, const sizing_range_options& o) const {
+    return std::apply(
+        [&](const auto&... f) {
+          sizing_bounds r{std::numeric_limits<double>::infinity(),
+                          std::numeric_limits<double>::infinity()};
+          ((r = combine(r, sizing_range(f, where, o))), ...);
+          return r;
+        },
+        fields);
+  }
   static sizing_bounds combine(sizing_bounds a, sizing_bounds b) {
     return {std::min(a.lo, b.lo), std::min(a.hi, b.hi)};
   }
