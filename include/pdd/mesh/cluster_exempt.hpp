@@ -1,17 +1,23 @@
 /// \file cluster_exempt.hpp
 /// pdd::find_cluster_exempt_triangles: the triangles of a mesh of a domain that is not one of
-/// closed loops that may stay below the angle bound, next to the small angles between its
-/// segments (the exemption of pdd::cgal::mesher's cluster rule).
+/// closed loops that may stay below the angle bound, at the small angles between its segments
+/// (the exemption of the kernels' rules for small input angles).
 ///
 /// Why not shields there: pdd's shields (dissertation 8.1) are built on closed loops. A domain
-/// with internal or dangling segments is meshed whole by the kernel, whose edge level is
-/// CGAL's Refine_edges_with_clusters: the segments meeting at an angle < 60 deg form a cluster,
-/// split on concentric shells round the apex (Shewchuk's remedy, as in Triangle), so that
-/// refinement terminates; a bad triangle whose circumcentre encroaches a subsegment of a reduced
-/// cluster, and whose shortest edge is longer than the cluster's, is left as it is
-/// (kernels/cgal/detail/cluster_rule.hpp). The triangles so left are exactly what this finds,
-/// up to the mesh's later state: a triangle below the bound is exempt when it has a vertex on a
-/// cluster segment or its circumcentre lies in the closed diametral disk of a mesh edge on one.
+/// with internal or dangling segments is meshed whole by the kernel, which treats a small angle
+/// between segments (< 60 deg) as Ruppert's concentric shells and Shewchuk's rules do, so that
+/// refinement terminates, and leaves two kinds of triangles below the bound there:
+///  - CGAL's kernel (Refine_edges_with_clusters, kernels/cgal/detail/cluster_rule.hpp): the
+///    segments meeting at the apex form a cluster, whose subsegments at the apex are split on
+///    shells; a bad triangle whose circumcentre encroaches one of them once the cluster is
+///    reduced is left. Its circumcentre lies in the closed diametral disk of a mesh edge at the
+///    apex along a segment of the small angle: within the cluster's shell radius of the apex.
+///  - The native kernel (kernels/native/detail/refine.hpp): a triangle bad only in shape whose
+///    shortest edge joins vertices on the two segments of the small angle at the same distance
+///    from the apex (one shell; squared distances within 2%) is left: its small angle is forced
+///    by the input angle.
+/// Exactly these are exempt; a bad triangle elsewhere, beside a segment of a small angle but
+/// away from its apex's shells, is reported.
 #pragma once
 
 #include <pdd/core/pslg.hpp>
@@ -22,7 +28,11 @@
 
 #include <algorithm>
 #include <array>
+#include <compare>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
 #include <utility>
 #include <vector>
 
@@ -32,16 +42,19 @@ namespace detail {
 /// The angle below which segments at a vertex form a cluster (CGAL's and Shewchuk's 60 deg).
 inline constexpr double cluster_angle_deg = 60.0;
 
-/// The segments (input vertex pairs) that bound a sector of the domain < 60 deg at a vertex.
-inline std::vector<std::pair<index_t, index_t>> cluster_segments(const pslg& g) {
-  std::vector<std::pair<index_t, index_t>> out;
-  for (const domain_angle& a : domain_angles(g)) {
-    if (a.angle_deg >= cluster_angle_deg) continue;
-    out.emplace_back(a.vertex, a.from);
-    out.emplace_back(a.vertex, a.to);
-  }
-  std::sort(out.begin(), out.end());
-  out.erase(std::unique(out.begin(), out.end()), out.end());
+/// A sector of the domain below 60 deg: its apex and the far ends of its two segments (PSLG
+/// vertex ids).
+struct small_sector {
+  index_t apex = no_index; ///< the apex
+  index_t a = no_index;    ///< the far end of the segment the sector starts from
+  index_t b = no_index;    ///< the far end of the segment it ends at
+};
+
+/// The sectors of g's domain below cluster_angle_deg (pdd::domain_angles).
+inline std::vector<small_sector> small_sectors(const pslg& g) {
+  std::vector<small_sector> out;
+  for (const domain_angle& a : domain_angles(g))
+    if (a.angle_deg < cluster_angle_deg && a.from != a.to) out.push_back({a.vertex, a.from, a.to});
   return out;
 }
 
@@ -75,11 +88,40 @@ inline void walk_cluster_segment(const verify_impl::edge_table& table, const tri
   }
 }
 
-/// The mesh edges (vertex pairs) on the cluster segments of g, walked from each end of each
-/// that is a vertex of m (walk_cluster_segment).
-inline std::vector<std::array<index_t, 2>>
-cluster_mesh_edges(const triangle_mesh& m, const pslg& g,
-                   const std::vector<std::pair<index_t, index_t>>& clusters) {
+/// A mesh vertex on a segment of a small sector (not its apex): the sector and which segment.
+struct sector_vertex {
+  index_t vertex = no_index; ///< the mesh vertex
+  std::uint32_t sector = 0;  ///< index in small_sectors
+  std::uint8_t side = 0;     ///< 0: the segment to small_sector::a, 1: to b
+  auto operator<=>(const sector_vertex&) const = default;
+};
+
+/// What the exemption needs of the mesh at the small sectors: the mesh vertices on their
+/// segments (sorted by vertex), and the mesh edges at their apexes along those segments.
+struct small_angle_marks {
+  std::vector<sector_vertex> on_sides;            ///< sorted
+  std::vector<std::array<index_t, 2>> apex_edges; ///< the first edge from each apex it holds
+};
+
+/// The mesh edges along segment [apex, far] that m holds: walked from the apex when m holds it
+/// (the first edge is then the apex's), and from the far end when m holds that.
+inline void walk_sector_side(const verify_impl::edge_table& table, const triangle_mesh& m,
+                             const verify_impl::vertex_lookup& lookup, const point& apex,
+                             const point& far, small_angle_marks& marks,
+                             std::vector<std::array<index_t, 2>>& edges) {
+  edges.clear();
+  if (const auto it = lookup.find(apex); it != lookup.end()) {
+    walk_cluster_segment(table, m, it->second, far, edges);
+    if (!edges.empty()) marks.apex_edges.push_back(edges.front());
+  }
+  if (const auto it = lookup.find(far); it != lookup.end())
+    walk_cluster_segment(table, m, it->second, apex, edges);
+}
+
+/// The small_angle_marks of m for the sectors of g (segments walked in the mesh itself,
+/// walk_cluster_segment).
+inline small_angle_marks mark_small_angles(const triangle_mesh& m, const pslg& g,
+                                           const std::vector<small_sector>& sectors) {
   std::vector<char> valid(m.triangles.size(), 1); // edge_table's precondition
   for (std::size_t t = 0; t < valid.size(); ++t) {
     const auto& tri = m.triangles[t];
@@ -92,13 +134,71 @@ cluster_mesh_edges(const triangle_mesh& m, const pslg& g,
   lookup.reserve(m.vertices.size());
   for (std::size_t v = 0; v < m.vertices.size(); ++v)
     lookup.try_emplace(m.vertices[v], static_cast<index_t>(v));
+  small_angle_marks marks;
   std::vector<std::array<index_t, 2>> edges;
-  for (const auto& [u, w] : clusters)
-    for (const auto& [from, to] : {std::pair{u, w}, std::pair{w, u}}) {
-      const auto it = lookup.find(g.vertices[from]);
-      if (it != lookup.end()) walk_cluster_segment(table, m, it->second, g.vertices[to], edges);
+  for (std::size_t k = 0; k < sectors.size(); ++k)
+    for (std::uint8_t side = 0; side < 2; ++side) {
+      const point& apex = g.vertices[sectors[k].apex];
+      walk_sector_side(table, m, lookup, apex, g.vertices[side ? sectors[k].b : sectors[k].a],
+                       marks, edges);
+      for (const auto& e : edges)
+        for (const index_t v : e)
+          if (!(m.vertices[v] == apex))
+            marks.on_sides.push_back({v, static_cast<std::uint32_t>(k), side});
     }
-  return edges;
+  std::sort(marks.on_sides.begin(), marks.on_sides.end());
+  marks.on_sides.erase(std::unique(marks.on_sides.begin(), marks.on_sides.end()),
+                       marks.on_sides.end());
+  return marks;
+}
+
+/// The sector marks of mesh vertex v.
+inline std::span<const sector_vertex> marks_of(const small_angle_marks& marks, index_t v) {
+  const auto lo = std::lower_bound(marks.on_sides.begin(), marks.on_sides.end(), v,
+                                   [](const sector_vertex& s, index_t x) { return s.vertex < x; });
+  auto hi = lo;
+  while (hi != marks.on_sides.end() && hi->vertex == v)
+    ++hi;
+  return {lo, hi};
+}
+
+/// The native kernel's rule: the shortest edge of triangle `tri` joins vertices on the two
+/// segments of one small sector at the same distance from its apex (squared distances within
+/// 2%, as kernels/native/detail/refine.hpp decides).
+inline bool across_one_shell(const triangle_mesh& m, const pslg& g,
+                             const std::vector<small_sector>& sectors,
+                             const small_angle_marks& marks, const std::array<index_t, 3>& tri) {
+  int k = 0;
+  double shortest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i) {
+    const double l = squared_distance(m.vertices[tri[(i + 1) % 3]], m.vertices[tri[(i + 2) % 3]]);
+    if (l < shortest) shortest = l, k = i;
+  }
+  const index_t p = tri[(k + 1) % 3], q = tri[(k + 2) % 3];
+  for (const sector_vertex& sp : marks_of(marks, p))
+    for (const sector_vertex& sq : marks_of(marks, q)) {
+      if (sp.sector != sq.sector || sp.side == sq.side) continue;
+      const point& apex = g.vertices[sectors[sp.sector].apex];
+      const double ratio =
+          squared_distance(apex, m.vertices[p]) / squared_distance(apex, m.vertices[q]);
+      if (ratio > 0.98 && ratio < 1.02) return true;
+    }
+  return false;
+}
+
+/// CGAL's cluster rule: the circumcentre of triangle `tri` lies in the closed diametral disk
+/// of a mesh edge at a small sector's apex along one of its segments.
+inline bool circumcentre_at_an_apex(const triangle_mesh& m, const small_angle_marks& marks,
+                                    const std::array<index_t, 3>& tri) {
+  const point &a = m.vertices[tri[0]], &b = m.vertices[tri[1]], &c = m.vertices[tri[2]];
+  const auto k =
+      CGAL::circumcenter(verify_impl::to_cgal(a), verify_impl::to_cgal(b), verify_impl::to_cgal(c));
+  const point cc{k.x(), k.y()};
+  return std::any_of(marks.apex_edges.begin(), marks.apex_edges.end(),
+                     [&](const std::array<index_t, 2>& e) {
+                       const point &p = m.vertices[e[0]], &q = m.vertices[e[1]];
+                       return (p.x - cc.x) * (q.x - cc.x) + (p.y - cc.y) * (q.y - cc.y) <= 0.0;
+                     });
 }
 
 /// Per triangle of m: 1 when its smallest angle is below min_angle_deg.
@@ -117,38 +217,27 @@ inline std::vector<char> below_angle_bound(const triangle_mesh& m, double min_an
 } // namespace detail
 
 /// Per triangle of m, a mesh of domain g (domain_rule::triangle, not closed loops) or a piece of
-/// one (a subdomain's mesh): 1 when its smallest angle is below min_angle_deg and it lies at a
-/// small angle between g's segments (see the file comment). The mesh edges on the cluster
-/// segments are found in the mesh itself (walked from the segments' ends that it holds), never
-/// in m.segments, so a mesh read back from a file gets the same answer as the one in memory.
-/// pdd::verify applies it by itself (pdd::find_quality_exempt_triangles).
-/// Complexity O(T + V + C D + B E) for C cluster segments, D mesh vertices along them, B
-/// triangles below the bound and E mesh edges on cluster segments (nothing is built when B = 0).
+/// one (a subdomain's mesh): 1 when its smallest angle is below min_angle_deg and it is one the
+/// kernels' small-angle rules leave (see the file comment): its shortest edge crosses a small
+/// sector on one shell, or its circumcentre lies in the diametral disk of a mesh edge at the
+/// sector's apex. The mesh edges on the sectors' segments are found in the mesh itself (walked
+/// from the segments' ends that it holds), never in m.segments, so a mesh read back from a file
+/// gets the same answer as the one in memory. pdd::verify applies it by itself
+/// (pdd::find_quality_exempt_triangles).
+/// Complexity O(T + V + C D + B (A + log V)) for C small sectors, D mesh vertices along their
+/// segments, B triangles below the bound and A apex edges (nothing is built when B = 0).
 /// Thread-safe.
 inline std::vector<char> find_cluster_exempt_triangles(const triangle_mesh& m, const pslg& g,
                                                        double min_angle_deg) {
   std::vector<char> exempt = detail::below_angle_bound(m, min_angle_deg);
   if (std::find(exempt.begin(), exempt.end(), 1) == exempt.end()) return exempt;
-  const auto clusters = detail::cluster_segments(g);
-  if (clusters.empty()) return std::vector<char>(m.triangles.size(), 0);
-  const std::vector<std::array<index_t, 2>> edges = detail::cluster_mesh_edges(m, g, clusters);
-  std::vector<char> on_cluster(m.vertices.size(), 0);
-  for (const auto& [u, w] : edges)
-    on_cluster[u] = on_cluster[w] = 1;
-  for (std::size_t t = 0; t < m.triangles.size(); ++t) {
-    if (!exempt[t]) continue;
-    const auto& tri = m.triangles[t];
-    if (on_cluster[tri[0]] || on_cluster[tri[1]] || on_cluster[tri[2]]) continue;
-    const point &a = m.vertices[tri[0]], &b = m.vertices[tri[1]], &c = m.vertices[tri[2]];
-    const auto k =
-        CGAL::circumcenter(detail::verify_impl::to_cgal(a), detail::verify_impl::to_cgal(b),
-                           detail::verify_impl::to_cgal(c));
-    const point cc{k.x(), k.y()};
-    exempt[t] = std::any_of(edges.begin(), edges.end(), [&](const std::array<index_t, 2>& e) {
-      const point &p = m.vertices[e[0]], &q = m.vertices[e[1]];
-      return (p.x - cc.x) * (q.x - cc.x) + (p.y - cc.y) * (q.y - cc.y) <= 0.0;
-    });
-  }
+  const std::vector<detail::small_sector> sectors = detail::small_sectors(g);
+  if (sectors.empty()) return std::vector<char>(m.triangles.size(), 0);
+  const detail::small_angle_marks marks = detail::mark_small_angles(m, g, sectors);
+  for (std::size_t t = 0; t < m.triangles.size(); ++t)
+    if (exempt[t])
+      exempt[t] = detail::across_one_shell(m, g, sectors, marks, m.triangles[t]) ||
+                  detail::circumcentre_at_an_apex(m, marks, m.triangles[t]);
   return exempt;
 }
 
