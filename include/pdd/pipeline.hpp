@@ -16,6 +16,7 @@
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/mesh_sink_ref.hpp>
 #include <pdd/meshing/mesh_subdomain.hpp>
@@ -60,11 +61,7 @@ public:
   /// validated once, the mesh size estimated, N and the path chosen with their reason).
   /// \throws pdd::decomposition_error for contradicting options; pdd::geometry_error for an
   /// invalid domain.
-  pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {})
-      : options_(checked(std::move(options))), mesher_(std::move(mesher)),
-        partitioner_(std::move(partitioner)), executor_(detail::make_executor<E>(options_.threads)),
-        run_(plan_run(std::move(domain), options_, executor_.concurrency())),
-        stats_(planned_statistics(run_.plan, executor_.concurrency())) {}
+  pipeline(pslg domain, generate_options options, M mesher = {}, P partitioner = {});
 
   /// The plan in force: plan_run's, or after a stage the fallback's or the retry's.
   const run_plan& plan() const noexcept { return state_ ? state_->plan : run_.plan; }
@@ -90,16 +87,7 @@ public:
   }
   /// As check_memory<S>(), for a sink that keeps its meshes in memory or not
   /// (`retains_meshes`, pdd::sink_retains_meshes).
-  void check_memory(bool retains_meshes) const {
-    detail::check_size_plan({.triangles = planned_triangles(),
-                             .estimate = &run_.plan.estimate,
-                             .domain = &run_.domain,
-                             .subdomains = stats_.subdomains,
-                             .threads = stats_.threads,
-                             .retains_meshes = retains_meshes,
-                             .max_triangles = options_.max_triangles,
-                             .check_memory = options_.check_memory});
-  }
+  void check_memory(bool retains_meshes) const;
 
   /// Subdomains mesh() does not mesh in its first round: their meshes exist already (a
   /// resumed run's intact pieces; generate_options::kept_subdomains).
@@ -111,29 +99,12 @@ public:
   /// Stage 1 (pdd::decompose_stage): MADD into N subdomains (nothing when N == 1; the
   /// decomposition is then empty). \throws pdd::decomposition_error when the domain cannot be
   /// split as asked.
-  const decomposition& decompose() {
-    if (state_) return state_->parts;
-    const auto t0 = std::chrono::steady_clock::now();
-    state_ = decompose_stage(run_.plan, run_, options_, partitioner_, executor_, stats_);
-    if (state_->plan.path != mesh_path::geometric) run_.regions.reset(); // not needed again
-    stats_.timings.decompose = seconds_since(t0);
-    return state_->parts;
-  }
+  const decomposition& decompose();
 
   /// Stage 2 (pdd::decouple_stage): the decoupling path (runs decompose() first if needed).
   /// Empty when N == 1, including after an automatic plan's fallback
   /// (statistics().monolithic_fallback). \throws as pdd::decouple.
-  const decoupled_decomposition& decouple() {
-    if (decoupled_) return state_->path;
-    decompose();
-    const auto t0 = std::chrono::steady_clock::now();
-    const double decompose_before = stats_.timings.decompose; // a second MADD run adds to it
-    state_ = decouple_stage(std::move(*state_), run_, options_, partitioner_, executor_, stats_);
-    run_.regions.reset(); // MADD's regions are not needed again
-    stats_.timings.decouple = seconds_since(t0) - (stats_.timings.decompose - decompose_before);
-    decoupled_ = true;
-    return state_->path;
-  }
+  const decoupled_decomposition& decouple();
 
   /// Stage 3 (pdd::mesh_stage): meshes every subdomain (runs decouple() first if needed) and
   /// delivers the meshes to `sink` (see pdd::mesh_subdomains; N == 1: the whole domain as
@@ -147,33 +118,11 @@ public:
 
   /// mesh() into the sink `sink` refers to: every sink goes through this one function, so the
   /// meshing stage is compiled once per kernel (libpdd holds it for the built-in ones).
-  const generate_statistics& mesh_into(mesh_sink_ref& sink) {
-    decouple();
-    check_memory(sink.referred_retains_meshes());
-    const auto t0 = std::chrono::steady_clock::now();
-    mesh_stage(*state_, run_, options_, mesher_, executor_, sink, stats_);
-    stats_.timings.mesh = seconds_since(t0) - stats_.timings.merge;
-    const generate_timings& t = stats_.timings;
-    stats_.timings.total = t.decompose + t.decouple + t.mesh + t.merge;
-    return stats_;
-  }
+  const generate_statistics& mesh_into(mesh_sink_ref& sink);
 
   /// The merged mesh: mesh() into a merge_sink, or for N == 1 the kernel's own output (no
   /// copy through a sink). \throws as mesh().
-  triangle_mesh mesh_merged() {
-    decouple();
-    if (stats_.subdomains > 1) {
-      merge_sink sink(options_.threads);
-      mesh(sink);
-      return sink.take();
-    }
-    check_memory<merge_sink>();
-    const auto t0 = std::chrono::steady_clock::now();
-    triangle_mesh m = mesh_whole(stats_.shielded_triangles);
-    stats_.timings.mesh = seconds_since(t0);
-    stats_.triangles = m.triangles.size();
-    return m;
-  }
+  triangle_mesh mesh_merged();
 
   /// The triangles the size check plans for: the estimate (pdd::estimate_mesh_size), plus, once
   /// the decoupling path exists, 4 per split point (the kernel grades out from the separators).
@@ -191,16 +140,11 @@ public:
     return mesh_whole(shielded);
   }
   /// As mesh_whole(); `shielded_triangles` receives the number of shielded triangles.
-  triangle_mesh mesh_whole(std::size_t& shielded_triangles) const {
-    return mesh_whole_stage(run_, options_, mesher_, shielded_triangles);
-  }
+  triangle_mesh mesh_whole(std::size_t& shielded_triangles) const;
 
   /// The kernel's options for the subdomains (after decouple(): the path's field and order of
   /// work; pdd::meshing_options_for), for meshing them elsewhere (e.g. over MPI ranks).
-  meshing_options meshing() {
-    decouple();
-    return meshing_options_for(*state_, options_);
-  }
+  meshing_options meshing();
 
   /// The statistics so far.
   const generate_statistics& statistics() const noexcept { return stats_; }
@@ -216,10 +160,7 @@ public:
   const E& executor() const noexcept { return executor_; }
 
 private:
-  static generate_options checked(generate_options o) {
-    check_generate_options(o);
-    return o;
-  }
+  static generate_options checked(generate_options o);
 
   generate_options options_;
   M mesher_;
@@ -230,5 +171,104 @@ private:
   bool decoupled_ = false;
   generate_statistics stats_;
 };
+
+// The members that run the stages, out of the class: not inline, so that a program that uses
+// pipeline with the built-in kernels, partitioner and executor links them from libpdd (declared
+// `extern template` below) instead of compiling the stages' callers again.
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+pipeline<M, P, E>::pipeline(pslg domain, generate_options options, M mesher, P partitioner)
+    : options_(checked(std::move(options))), mesher_(std::move(mesher)),
+      partitioner_(std::move(partitioner)), executor_(detail::make_executor<E>(options_.threads)),
+      run_(plan_run(std::move(domain), options_, executor_.concurrency())),
+      stats_(planned_statistics(run_.plan, executor_.concurrency())) {}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+void pipeline<M, P, E>::check_memory(bool retains_meshes) const {
+  detail::check_size_plan({.triangles = planned_triangles(),
+                           .estimate = &run_.plan.estimate,
+                           .domain = &run_.domain,
+                           .subdomains = stats_.subdomains,
+                           .threads = stats_.threads,
+                           .retains_meshes = retains_meshes,
+                           .max_triangles = options_.max_triangles,
+                           .check_memory = options_.check_memory});
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+const decomposition& pipeline<M, P, E>::decompose() {
+  if (state_) return state_->parts;
+  const auto t0 = std::chrono::steady_clock::now();
+  state_ = decompose_stage(run_.plan, run_, options_, partitioner_, executor_, stats_);
+  if (state_->plan.path != mesh_path::geometric) run_.regions.reset(); // not needed again
+  stats_.timings.decompose = seconds_since(t0);
+  return state_->parts;
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+const decoupled_decomposition& pipeline<M, P, E>::decouple() {
+  if (decoupled_) return state_->path;
+  decompose();
+  const auto t0 = std::chrono::steady_clock::now();
+  const double decompose_before = stats_.timings.decompose; // a second MADD run adds to it
+  state_ = decouple_stage(std::move(*state_), run_, options_, partitioner_, executor_, stats_);
+  run_.regions.reset(); // MADD's regions are not needed again
+  stats_.timings.decouple = seconds_since(t0) - (stats_.timings.decompose - decompose_before);
+  decoupled_ = true;
+  return state_->path;
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+const generate_statistics& pipeline<M, P, E>::mesh_into(mesh_sink_ref& sink) {
+  decouple();
+  check_memory(sink.referred_retains_meshes());
+  const auto t0 = std::chrono::steady_clock::now();
+  mesh_stage(*state_, run_, options_, mesher_, executor_, sink, stats_);
+  stats_.timings.mesh = seconds_since(t0) - stats_.timings.merge;
+  const generate_timings& t = stats_.timings;
+  stats_.timings.total = t.decompose + t.decouple + t.mesh + t.merge;
+  return stats_;
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+triangle_mesh pipeline<M, P, E>::mesh_merged() {
+  decouple();
+  if (stats_.subdomains > 1) {
+    merge_sink sink(options_.threads);
+    mesh(sink);
+    return sink.take();
+  }
+  check_memory<merge_sink>();
+  const auto t0 = std::chrono::steady_clock::now();
+  triangle_mesh m = mesh_whole(stats_.shielded_triangles);
+  stats_.timings.mesh = seconds_since(t0);
+  stats_.triangles = m.triangles.size();
+  return m;
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+triangle_mesh pipeline<M, P, E>::mesh_whole(std::size_t& shielded_triangles) const {
+  return mesh_whole_stage(run_, options_, mesher_, shielded_triangles);
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+meshing_options pipeline<M, P, E>::meshing() {
+  decouple();
+  return meshing_options_for(*state_, options_);
+}
+
+template <DelaunayMesher M, GraphPartitioner P, Executor E>
+generate_options pipeline<M, P, E>::checked(generate_options o) {
+  check_generate_options(o);
+  return o;
+}
+
+// explicit instantiation declarations (not API): hidden from Doxygen
+/// \cond
+#ifndef PDD_HEADER_ONLY
+extern template class pipeline<cgal::mesher, default_partitioner, tbb_executor>;
+extern template class pipeline<native::mesher, default_partitioner, tbb_executor>;
+#endif
+/// \endcond
 
 } // namespace pdd

@@ -2,10 +2,11 @@
 /// What libpdd holds compiled: the stages of the chain (pipeline/chain.hpp) with the built-in
 /// kernels (pdd::cgal::mesher, pdd::native::mesher), the default partitioner and the TBB
 /// executor, every sink through pdd::mesh_sink_ref, and both kernels for pdd::any_sizing and
-/// pdd::uniform_sizing. Outside a header-only build (PDD_HEADER_ONLY) they are declared here
-/// `extern template`, so a program that includes the stages' templates does not compile these
-/// again: it links them from libpdd. Other kernels, partitioners, executors and sizing fields
-/// are compiled where they are used, as in a header-only build.
+/// pdd::uniform_sizing, and pdd::decompose (MADD) with the default partitioner. Outside a
+/// header-only build (PDD_HEADER_ONLY) they are declared here `extern template`, so a program that
+/// includes the stages' templates does not compile these again: it links them from libpdd. Other
+/// kernels, partitioners, executors and sizing fields are compiled where they are used, as in a
+/// header-only build.
 #pragma once
 
 #include <pdd/core/mesh_criteria.hpp>
@@ -13,6 +14,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/kernels/cgal/mesher_templates.hpp>
 #include <pdd/kernels/native/mesher_templates.hpp>
+#include <pdd/madd/decompose.hpp>
 #include <pdd/mesh/mesh_sink_ref.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
@@ -35,8 +37,14 @@
       run_state&, const planned_run&, const generate_options&, const M&, const tbb_executor&,      \
       mesh_sink_ref&, generate_statistics&)
 
-/// The instantiations of the decomposition stages that libpdd holds (see above).
+/// The instantiations of the decomposition stages that libpdd holds (see above), and MADD
+/// (pdd::decompose) with the default partitioner, which the stages and pdd-decompose call.
 #define PDD_STAGE_INSTANTIATIONS(PREFIX)                                                           \
+  PREFIX decomposition decompose<default_partitioner>(const madd_start&, const madd_options&,      \
+                                                      const default_partitioner&,                  \
+                                                      decomposition_statistics*);                  \
+  PREFIX decomposition decompose<default_partitioner>(                                             \
+      const pslg&, const madd_options&, const default_partitioner&, decomposition_statistics*);    \
   PREFIX run_state decompose_stage<default_partitioner, tbb_executor>(                             \
       const run_plan&, const planned_run&, const generate_options&, const default_partitioner&,    \
       const tbb_executor&, generate_statistics&);                                                  \
