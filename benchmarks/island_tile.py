@@ -8,8 +8,12 @@ islands are). Deterministic for a given seed.
 
 The island count is chosen so that the file has about VERTICES vertices."""
 import math
+import os
 import random
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from poly_file import write_poly  # noqa: E402
 
 
 def island(rng, cx, cy, r, n, start_angle):
@@ -62,13 +66,7 @@ def tile(vertices, seed):
 
 def main():
     verts, segs, holes = tile(int(sys.argv[1]), int(sys.argv[3]) if len(sys.argv) > 3 else 1)
-    with open(sys.argv[2], "w") as f:
-        f.write(f"{len(verts)} 2 0 0\n")
-        f.writelines(f"{i + 1} {x!r} {y!r}\n" for i, (x, y) in enumerate(verts))
-        f.write(f"{len(segs)} 0\n")
-        f.writelines(f"{i + 1} {a + 1} {b + 1}\n" for i, (a, b) in enumerate(segs))
-        f.write(f"{len(holes)}\n")
-        f.writelines(f"{i + 1} {x!r} {y!r}\n" for i, (x, y) in enumerate(holes))
+    write_poly(sys.argv[2], verts, segs, holes, first=1)
 
 
 if __name__ == "__main__":

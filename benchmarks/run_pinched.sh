@@ -17,8 +17,9 @@ triangle=${3:-}
 cracks=${4:-0}
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
-python3 - "$dir/lake.poly" "$cracks" <<'PY'
+PYTHONPATH="$(dirname "$0")" python3 - "$dir/lake.poly" "$cracks" <<'PY'
 import math, random, sys
+from poly_file import write_poly
 rng = random.Random(5)
 n = 400
 pts = []
@@ -84,13 +85,7 @@ for ch in range(5):  # three islands touching at one vertex in open water
     island(v, t + math.pi / 2, 0.3, 5)
     if sys.argv[2] == "1":
         add_cracks(v, 0.25)
-with open(sys.argv[1], "w") as f:
-    f.write(f"{len(pts)} 2 0 0\n")
-    f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(pts))
-    f.write(f"{len(segs)} 0\n")
-    f.writelines(f"{i} {a} {b}\n" for i, (a, b) in enumerate(segs))
-    f.write(f"{len(holes)}\n")
-    f.writelines(f"{i} {x!r} {y!r}\n" for i, (x, y) in enumerate(holes))
+write_poly(sys.argv[1], pts, segs, holes)
 PY
 # Raw data: benchmarks/results/pinched[-cracks].jsonl (first line: the provenance); the table is
 # printed from it (benchmarks/side_by_side.sh: the same work on both sides, one pinned thread
