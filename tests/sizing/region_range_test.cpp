@@ -130,6 +130,25 @@ TEST(SizingRegionRange, AFieldNotPositiveInTheDomainIsRefusedNamingAPointOfIt) {
   EXPECT_NE(faces.locate(named).where, pdd::face_location::kind::outside) << msg;
 }
 
+// A degenerate triangle of a region (three points on a line) adds only the points of its line:
+// the grid nodes around it are not taken for points of the region.
+TEST(SizingRegionRange, ADegenerateTriangleAddsOnlyItsLine) {
+  const std::vector<point> v{{0, 0}, {1, 0}, {0, 1}, {2, 2}, {3, 2.5}, {4, 3}};
+  const std::vector<std::array<pdd::index_t, 3>> t{{0, 1, 2}, {3, 4, 5}};
+  // defined on the triangle and on the line y = 1 + x / 2 through the degenerate one; throws
+  // anywhere else
+  const pdd::analytic_sizing f{[](const point& p) {
+    const bool in_triangle = p.x >= -1e-12 && p.y >= -1e-12 && p.x + p.y <= 1 + 1e-12;
+    if (!in_triangle && std::abs(p.y - (1 + p.x / 2)) > 1e-9)
+      throw std::logic_error("evaluated off the region");
+    return 1.0 + p.x;
+  }};
+  const pdd::sizing_bounds b = pdd::sizing_range(f, pdd::sizing_region{v, t});
+  EXPECT_GT(b.lo, 0.0);
+  EXPECT_LE(b.lo, 1.0);
+  EXPECT_GE(b.hi, 5.0); // x = 4 at the line's end
+}
+
 // Random domains (a star-shaped outer loop, a polygonal hole) and fields positive on the domain
 // but negative inside the hole: F = a + s (|p - h|^2 - rho^2), rho the hole's inradius, so
 // F >= a on the domain and F = a - s rho^2 < 0 at the hole's centre. A quadratic: the grid

@@ -45,10 +45,12 @@ inline std::pair<double, double> row_extent(const point& a, const point& b, cons
   return {lo, hi};
 }
 
-/// True when p lies in the closed triangle abc (exact predicates, either orientation).
+/// True when p lies in the closed triangle abc (exact predicates, either orientation); false
+/// for a degenerate triangle (its points are sampled as its edges' crossings).
 inline bool in_closed_triangle(const epick::Point_2& a, const epick::Point_2& b,
                                const epick::Point_2& c, const epick::Point_2& p) {
   const CGAL::Orientation o = CGAL::orientation(a, b, c);
+  if (o == CGAL::COLLINEAR) return false;
   const auto side = [o](CGAL::Orientation s) { return s == o || s == CGAL::COLLINEAR; };
   return side(CGAL::orientation(a, b, p)) && side(CGAL::orientation(b, c, p)) &&
          side(CGAL::orientation(c, a, p));
