@@ -3,7 +3,7 @@
 #pragma once
 
 #include <pdd/madd/gradation_control.hpp>
-#include <pdd/sizing/domain_region.hpp>
+#include <pdd/madd/subdomain_region.hpp>
 #include <pdd/sizing/sizing_range.hpp>
 
 #include <gtest/gtest.h>
@@ -12,17 +12,6 @@
 #include <vector>
 
 namespace pdd::test {
-
-/// The subdomain's region (its loops' faces), as Algorithm 7.1 bounds the field over it.
-inline pdd::triangulated_region region_of(const pdd::decomposition& d, const pdd::subdomain& s) {
-  std::vector<std::vector<pdd::point>> loops;
-  for (const auto& loop : s.loops) {
-    loops.emplace_back();
-    for (const auto v : loop)
-      loops.back().push_back(d.vertices[v]);
-  }
-  return pdd::loops_region(loops);
-}
 
 /// Asserts Conditions 1 and 2 on every subdomain and interface from pdd::sizing_range over
 /// each subdomain's region with Algorithm 7.1's grid rule (o.range; independently of the
@@ -33,8 +22,8 @@ inline void expect_gradation_conditions(const pdd::decomposition& d, const pdd::
   ASSERT_EQ(rep.bounds.size(), d.subdomains.size());
   std::vector<double> lo;
   for (std::size_t s = 0; s < d.subdomains.size(); ++s) {
-    const pdd::sizing_bounds b =
-        pdd::sizing_range(f, region_of(d, d.subdomains[s]).view(), o.range);
+    const pdd::sizing_bounds b = pdd::sizing_range(
+        f, pdd::subdomain_region(d, static_cast<pdd::index_t>(s)).view(), o.range);
     EXPECT_LE(b.hi, o.r1 * b.lo) << "Condition 1, subdomain " << s;
     EXPECT_EQ(b.lo, rep.bounds[s].lo);
     lo.push_back(b.lo);

@@ -22,8 +22,8 @@
 
 namespace pdd::detail {
 
-/// Node (i, j) of an nx x ny cell grid over box b: the same arithmetic as the box grid of
-/// sampled_range (sample_field), so both rules see the same points.
+/// Node (i, j) of an nx x ny cell grid over box b (0 cells along a flat side: its one node);
+/// the box rule (sample_field) and the region rule both take their nodes from here.
 inline point grid_node(const pdd::bbox& b, std::size_t nx, std::size_t ny, std::size_t i,
                        std::size_t j) {
   return {

@@ -5,6 +5,7 @@
 
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/sizing/detail/region_grid.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -29,8 +30,7 @@ sampled_grid sample_field(const F& f, const pdd::bbox& b, std::size_t nx, std::s
   sampled_grid g{nx, ny, std::vector<double>((nx + 1) * (ny + 1))};
   for (std::size_t j = 0; j <= ny; ++j)
     for (std::size_t i = 0; i <= nx; ++i) {
-      const point p{nx ? b.xmin + (b.xmax - b.xmin) * static_cast<double>(i) / nx : b.xmin,
-                    ny ? b.ymin + (b.ymax - b.ymin) * static_cast<double>(j) / ny : b.ymin};
+      const point p = grid_node(b, nx, ny, i, j);
       const double a = static_cast<double>(f.area_at(p));
       if (!(a > 0.0))
         throw sizing_error("the sizing field is " + std::to_string(a) + " at (" +
@@ -125,6 +125,15 @@ inline sizing_bounds grid_bounds(const sampled_grid& g) {
   return r;
 }
 
+/// The mesh-scale cell count: ceil(mesh_resolution * longer side of b / sqrt(lo)) within
+/// [8, cells] (sizing_range_options::mesh_resolution).
+inline std::size_t mesh_scale_cells(const pdd::bbox& b, double lo, double mesh_resolution,
+                                    std::size_t cells) {
+  const double side = std::max(b.xmax - b.xmin, b.ymax - b.ymin);
+  const double want = std::ceil(mesh_resolution * side / std::sqrt(lo));
+  return static_cast<std::size_t>(std::clamp(want, 8.0, static_cast<double>(cells)));
+}
+
 /// The cells a side of sampled_range's first grid: `cells`, or with mesh_resolution > 0 the
 /// mesh-scale count ceil(mesh_resolution * longer side / sqrt(lo)) within [8, cells], lo the
 /// lower bound of a first 8 x 8 grid (no coarsening when that grid gives no positive, finite
@@ -137,10 +146,7 @@ std::size_t first_grid_cells(const F& f, const pdd::bbox& b, std::size_t cells,
   coarse = grid_bounds(
       sample_field(f, b, b.xmax > b.xmin ? smallest : 0, b.ymax > b.ymin ? smallest : 0));
   if (!(coarse.lo > 0.0) || !std::isfinite(coarse.lo)) return cells;
-  const double side = std::max(b.xmax - b.xmin, b.ymax - b.ymin);
-  const double want = std::ceil(mesh_resolution * side / std::sqrt(coarse.lo));
-  return static_cast<std::size_t>(
-      std::clamp(want, static_cast<double>(smallest), static_cast<double>(cells)));
+  return mesh_scale_cells(b, coarse.lo, mesh_resolution, cells);
 }
 
 /// pdd::sizing_range for fields without range(): see the rule in sizing_range.hpp.

@@ -126,11 +126,7 @@ std::size_t first_region_grid_cells(const F& f, const sizing_region& r, std::siz
   if (!(mesh_resolution > 0.0) || cells <= smallest) return cells;
   coarse = region_grid_range(f, r, smallest, low);
   if (!(coarse.lo > 0.0) || !std::isfinite(coarse.lo)) return cells;
-  const pdd::bbox b = r.box();
-  const double side = std::max(b.xmax - b.xmin, b.ymax - b.ymin);
-  const double want = std::ceil(mesh_resolution * side / std::sqrt(coarse.lo));
-  return static_cast<std::size_t>(
-      std::clamp(want, static_cast<double>(smallest), static_cast<double>(cells)));
+  return mesh_scale_cells(r.box(), coarse.lo, mesh_resolution, cells);
 }
 
 /// The error of a region whose lower bound stays <= 0 at the finest grid.
