@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <limits>
 #include <string>
+#include <vector>
 
 namespace gradation_control_test {
 namespace {
@@ -133,6 +134,31 @@ TEST(GradationControl, UnsplittableSubdomainIsNamedWithItsBounds) {
     EXPECT_NE(msg.find("subdomain 0 (m 0.0001, M 0.0011"), std::string::npos) << msg;
     EXPECT_NE(msg.find("fails Condition 1"), std::string::npos) << msg;
   }
+}
+
+// A cap around a small angle between two faces (MADD keeps it whole) whose field varies more
+// than R1 and lies far below its neighbours': no split can meet Conditions 1 and 2 there, so
+// the cap fails none and its neighbours are not held to its m. Before, every neighbour failed
+// Condition 2 against the cap whatever its size, and Algorithm 7.1 split them until
+// max_subdomains (Triangle's la.poly: 4096 subdomains at one cap).
+TEST(GradationControl, ACapFailsNoConditionAndDoesNotSplitItsNeighboursWithoutEnd) {
+  pdd::pslg g; // a unit square and its diagonal: 45 deg corners between the faces, two caps
+  g.add_loop(std::vector<pdd::point>{{0, 0}, {1, 0}, {1, 1}, {0, 1}});
+  g.add_segment(0, 2);
+  g.rule = pdd::domain_rule::triangle;
+  const pdd::any_sizing f = pdd::expression_sizing("1e-6+1e-3*(x^2+y^2)"); // m at (0, 0)
+  const pdd::gradation_options o{.min_subdomain_triangles = 0, .max_subdomains = 3000};
+  pdd::gradation_report rep;
+  const pdd::decomposition d =
+      pdd::gradation_controlled_decompose(g, f, o, {.threads = 1}, {}, &rep);
+  EXPECT_FALSE(rep.capped) << d.subdomains.size() << " subdomains";
+  EXPECT_LT(d.subdomains.size(), 1000u);
+  EXPECT_TRUE(pdd::validate_decomposition(d, g).ok());
+  EXPECT_LE(rep.condition_1_unmet, 2u); // at most the two caps
+  std::size_t caps_with_wide_field = 0;
+  for (const pdd::sizing_bounds& b : rep.bounds)
+    caps_with_wide_field += b.hi > o.r1 * b.lo ? 1 : 0;
+  EXPECT_GE(caps_with_wide_field, 1u); // the cap at (0, 0): m 1e-6, M 6.35e-5
 }
 
 } // namespace

@@ -22,6 +22,9 @@ struct madd_leaf_view {
   std::vector<std::span<const point>> loops;
   /// The leaf's area (outer loop less its holes), in squared input units.
   double area = 0.0;
+  /// MADD never splits this leaf, whatever its priority: a cap around a small angle between
+  /// the faces of a general PSLG, meshed whole by the kernel.
+  bool keep_whole = false;
 };
 
 /// Decides the splits of a graded MADD (4.4, 7.3). Called before every round with all

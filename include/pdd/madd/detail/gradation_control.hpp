@@ -104,17 +104,26 @@ std::vector<std::pair<std::size_t, std::size_t>> shared_edge_pairs(std::size_t n
 }
 
 /// The conditions every leaf fails (bit set of fails_condition_*), from its measures and the
-/// neighbour pairs. A leaf with m = infinity (no bound anywhere in it) fails none of 1-2.
+/// neighbour pairs. A leaf with m = infinity (no bound anywhere in it) fails none of 1-2. A
+/// leaf that MADD keeps whole (`whole[i]`, a cap around a small angle between faces) fails
+/// none, and no neighbour fails Condition 2 against it: no split can change the cap, whose m
+/// comes from the features it encloses, so holding its neighbours to it would split them
+/// without end (la.poly: 4096 subdomains at the cap). Condition 2 only keeps k_i varying
+/// slowly; pdd::decouple_graded checks relation 7.1 on every separator segment and lowers k
+/// beside the cap where it must.
 inline std::vector<unsigned>
 failed_conditions(const std::vector<leaf_measure>& m,
                   const std::vector<std::pair<std::size_t, std::size_t>>& pairs, double r1,
-                  double r2, double t) {
+                  double r2, double t, const std::vector<bool>& whole = {}) {
+  const auto kept_whole = [&](std::size_t i) { return i < whole.size() && whole[i]; };
   std::vector<unsigned> fail(m.size(), 0u);
   for (std::size_t i = 0; i < m.size(); ++i) {
+    if (kept_whole(i)) continue;
     if (std::isfinite(m[i].lo) && m[i].hi > r1 * m[i].lo) fail[i] |= fails_condition_1;
     if (m[i].expected > t) fail[i] |= fails_condition_3;
   }
   for (const auto& pr : pairs) {
+    if (kept_whole(pr.first) || kept_whole(pr.second)) continue;
     const double a = m[pr.first].lo, b = m[pr.second].lo;
     if (a > r2 * b || b > r2 * a) {
       fail[pr.first] |= fails_condition_2;
@@ -204,7 +213,10 @@ struct gradation_policy_state {
     measure_leaves(leaves);
     const auto pairs = shared_edge_pairs(
         leaves.size(), [&](std::size_t i) -> const auto& { return leaves[i].loops; });
-    last_fail = failed_conditions(last, pairs, r1, r2, t);
+    std::vector<bool> whole(leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+      whole[i] = leaves[i].keep_whole;
+    last_fail = failed_conditions(last, pairs, r1, r2, t, whole);
     const bool few = leaves.size() < min_leaves;
     last_priority.assign(leaves.size(), 0.0);
     for (std::size_t i = 0; i < leaves.size(); ++i) {

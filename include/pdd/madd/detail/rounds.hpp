@@ -84,6 +84,7 @@ struct madd_state {
     std::vector<madd_leaf_view> views(leaves.size());
     for (std::size_t i = 0; i < leaves.size(); ++i) {
       views[i].area = leaves[i].region.area;
+      views[i].keep_whole = leaves[i].region.keep_whole;
       for (const madd_loop& l : leaves[i].region.loops)
         views[i].loops.emplace_back(l.points);
     }
