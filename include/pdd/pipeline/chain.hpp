@@ -18,6 +18,7 @@
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
 #include <pdd/meshing/mesh_subdomains.hpp>
+#include <pdd/pipeline/detail/face_path.hpp>
 #include <pdd/pipeline/detail/graded_path.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/detail/plan.hpp>
@@ -121,6 +122,35 @@ void adopt_geometric(run_state& s, const planned_run& in, const generate_options
   }
 }
 
+/// The geometric path on a general PSLG (detail::face_geometric_decompose) on s.parts: the round
+/// estimated to add the fewest triangles replaces MADD's decomposition; the rounds go to the
+/// reason. Under automatic N, the whole domain when that round is estimated to add more than
+/// planning.max_face_over_refinement of the estimated triangles.
+template <GraphPartitioner P, Executor E>
+void adopt_face_geometric(run_state& s, const planned_run& in, const generate_options& o,
+                          const madd_options& mo, const P& partitioner, const E& executor,
+                          generate_statistics& st) {
+  face_path_result r =
+      face_geometric_decompose(std::move(s.parts), o, st.subdomains, s.plan.geometric_cap, mo,
+                               partitioner, executor, *in.regions);
+  s.parts = std::move(r.parts);
+  if (r.chosen != 0) s.gradation = {}; // k_i from the user's field over the new subdomains
+  st.geometric_cap = geometric_cap(s.plan.geometric_cap, st.subdomains);
+  st.subdomains = s.parts.subdomains.size();
+  st.sizing_rounds = r.rounds.size();
+  st.sizing_round_used = r.chosen;
+  st.estimated_over_refinement.clear();
+  st.plan_reason += face_path_reason(r, o);
+  const std::optional<face_path_cost>& cost = r.rounds[r.chosen].cost;
+  const double bound = o.planning.max_face_over_refinement * st.estimated_triangles;
+  if (o.subdomains != 0 || !cost || !(cost->extra_triangles > bound)) return;
+  st.plan_reason += "; " + number_text(std::round(cost->extra_triangles)) + " > " +
+                    number_text(100.0 * o.planning.max_face_over_refinement) +
+                    " % of the estimated triangles (planning.max_face_over_refinement): " +
+                    "decoupling would not pay, one subdomain";
+  adopt_whole_domain(s, whole_domain_plan(s.plan, st.plan_reason), o, st);
+}
+
 /// One MADD run with mo into s: Algorithm 7.1 where the plan says so (with the user's field),
 /// else N-way MADD; then the geometric path's adoption.
 template <GraphPartitioner P, Executor E>
@@ -137,7 +167,11 @@ void madd_with(run_state& s, const planned_run& in, const generate_options& o,
     s.parts = pdd::decompose(*in.regions, mo, partitioner, &st.decomposition);
   }
   st.subdomains = s.parts.subdomains.size();
-  if (s.plan.path == mesh_path::geometric) adopt_geometric(s, in, o, mo, partitioner, executor, st);
+  if (s.plan.path != mesh_path::geometric) return;
+  if (s.plan.general_domain)
+    adopt_face_geometric(s, in, o, mo, partitioner, executor, st);
+  else
+    adopt_geometric(s, in, o, mo, partitioner, executor, st);
 }
 
 /// MADD for the plan of s; on a general domain the separators first keep 4 k_area from its

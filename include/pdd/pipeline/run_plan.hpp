@@ -31,7 +31,8 @@ enum class mesh_path {
   monolithic, ///< N = 1: the kernel on the whole domain
   uniform,    ///< one k (Theorem 15): decoupling.k_override or k_scale set
   graded,     ///< k_i per subdomain (Theorem 22) from the user's field or the uniform bound
-  geometric,  ///< the decomposition graded by Algorithm 8.3's F, then k_i (Theorem 22)
+  geometric,  ///< the decomposition graded towards tiny features (Algorithm 8.3's F on closed
+              ///< loops; the faces' features on a general PSLG), then k_i (Theorem 22)
 };
 
 /// generate_statistics::path's name of a path.
@@ -110,7 +111,8 @@ inline mesh_path decoupled_path(const generate_options& o, bool geometric) {
 /// once (detail::read_domain), estimates the mesh (pdd::estimate_mesh_size), takes N
 /// (options.subdomains; 0: automatic_subdomains of the estimate when some area bound is given,
 /// 1 without any; a general domain at least one per face) and the path: monolithic for N = 1,
-/// geometric where detail::choose_geometric_path says so, uniform where k is set, else graded.
+/// geometric where detail::choose_geometric_path (detail::choose_face_geometric_path on a
+/// general PSLG) says so, uniform where k is set, else graded.
 /// \pre check_generate_options(o) passed. \throws pdd::geometry_error for an invalid domain;
 /// pdd::sizing_error for a field that is not positive in the domain (read_domain).
 /// Complexity: validation, the field's bounds and the estimate.
@@ -131,10 +133,13 @@ inline planned_run plan_run(pslg domain, const generate_options& o, unsigned thr
                        : detail::general_domain_plan{};
   p.subdomains = detail::planned_subdomains(o, p.estimate.triangles, threads,
                                             p.general_domain ? &general : nullptr, p.reason);
-  bool geometric = false;
-  if (!p.general_domain) // the geometric path measures lfs_min on closed loops
-    geometric = detail::choose_geometric_path(r.domain, o, p.decoupling_criteria.max_area,
-                                              p.subdomains, p.estimate.triangles, p.reason);
+  const bool geometric =
+      p.general_domain
+          ? detail::choose_face_geometric_path(r.regions ? &*r.regions : nullptr, o,
+                                               p.decoupling_criteria.max_area, p.subdomains,
+                                               p.reason)
+          : detail::choose_geometric_path(r.domain, o, p.decoupling_criteria.max_area, p.subdomains,
+                                          p.estimate.triangles, p.reason);
   p.path = p.subdomains <= 1 ? mesh_path::monolithic : detail::decoupled_path(o, geometric);
   p.gradation_controlled = o.sizing && p.subdomains > 1 && p.path != mesh_path::uniform;
   p.geometric_cap = o.geometric_loop.max_subdomains;

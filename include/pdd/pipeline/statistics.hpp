@@ -94,7 +94,8 @@ struct generate_statistics {
   /// the estimated over-refinement of each (integral of 1 / F over that of 1 / f, minus 1) and
   /// the round used.
   std::size_t sizing_rounds = 0;
-  /// One value per round, in round order (empty where the geometric path did not run).
+  /// One value per round, in round order (empty where the geometric path did not run, and on a
+  /// general PSLG, whose rounds are judged by their split points: plan_reason lists them).
   std::vector<double> estimated_over_refinement;
   /// The index (0-based, in round order) of the round whose decomposition and F were used.
   std::size_t sizing_round_used = 0;

@@ -8,10 +8,12 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
+#include <pdd/madd/madd_start.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/statistics.hpp>
 
@@ -86,6 +88,37 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
       "lfs_min " + number_text(lfs) + ", (1/2) sqrt(m / sqrt2) " + number_text(term);
   if (!(lfs < term)) return no("no feature smaller than the mesh (" + numbers + ")");
   return !no("a feature smaller than the mesh (" + numbers + "): Algorithm 8.3");
+}
+
+/// Whether the geometric path is planned on a domain that is not one of closed loops, with
+/// regions `regions` (pdd::madd_start), for N = `subdomains`, `area_min` as above; appends the
+/// reason to `reason` (which says already why N). Unlike on closed loops, geometric sizing auto
+/// plans it for a requested N too: the faces are subdomains whatever N, so a small feature of
+/// a face sets k_i of that face and of its neighbours (relation 7.1) along every interface
+/// unless the decomposition is graded towards it (detail::face_geometric_decompose).
+inline bool choose_face_geometric_path(const madd_start* regions, const generate_options& o,
+                                       double area_min, std::size_t subdomains,
+                                       std::string& reason) {
+  const auto no = [&](const std::string& why) {
+    reason += "; not the geometric path: " + why;
+    return false;
+  };
+  if (subdomains <= 1 || !regions) return false; // the reason says why one subdomain
+  if (o.geometric_sizing == geometric_sizing_mode::off) return no("geometric sizing off");
+  if (o.decoupling.k_override > 0.0 || o.decoupling.k_scale != 1.0)
+    return no("decoupling.k_override or k_scale set: the uniform path");
+  if (!std::isfinite(area_min)) return no("no area bound");
+  if (o.geometric_sizing == geometric_sizing_mode::on) {
+    reason += "; geometric sizing on";
+    return true;
+  }
+  if (o.sizing)
+    return no("a sizing field: the graded path (geometric sizing auto needs a uniform bound)");
+  std::size_t found = 0;
+  tiny_feature_driver(region_vertex_gaps(*regions), o.sizing, area_min, 1, 1.0, found);
+  if (found == 0) return no("no feature of a face is smaller than the mesh");
+  reason += "; a feature of a face is smaller than the mesh: the geometric path on the faces";
+  return true;
 }
 
 /// The geometric loop's cap on subdomains for a plan of n: the plan's `cap`, at least 4n.
