@@ -66,7 +66,7 @@ inline void write_svg(const std::filesystem::path& path, const triangle_mesh& me
     throw error("cannot write '" + path.string() + "': the window needs x0 < x1 and y0 < y1");
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    detail::bbox box;
+    detail::svg_box box;
     for (const point& p : mesh.vertices)
       box.add(p);
     const bool large = mesh.triangles.size() > options.max_triangles;
@@ -75,7 +75,7 @@ inline void write_svg(const std::filesystem::path& path, const triangle_mesh& me
     if (!w && large) w = detail::automatic_window(mesh, edges, box, options);
     detail::svg_canvas c(out, box, options);
     std::optional<detail::svg_canvas> inset;
-    if (w) inset.emplace(out, detail::bbox{w->x0, w->y0, w->x1, w->y1}, options);
+    if (w) inset.emplace(out, detail::svg_box{w->x0, w->y0, w->x1, w->y1}, options);
     c.open("pdd mesh: " + std::to_string(mesh.vertices.size()) + " vertices, " +
                std::to_string(mesh.triangles.size()) + " triangles",
            inset ? inset->height() : 0.0);
@@ -101,7 +101,7 @@ inline void write_svg(const std::filesystem::path& path, const triangle_mesh& me
   detail::check_svg_pslg(overlay, path);
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    detail::bbox box = detail::pslg_box(overlay);
+    detail::svg_box box = detail::pslg_box(overlay);
     for (const point& p : mesh.vertices)
       box.add(p);
     detail::svg_canvas c(out, box, options);
@@ -128,7 +128,7 @@ inline void write_svg(const std::filesystem::path& path, const decomposition& d,
   detail::check_decomposition(d, path);
   write_file_atomically(path, [&](std::ostream& os) {
     detail::text_sink out(os);
-    detail::bbox box;
+    detail::svg_box box;
     for (const point& p : d.vertices)
       box.add(p);
     detail::svg_canvas c(out, box, options);

@@ -116,7 +116,7 @@ struct centroid_grid {
   std::size_t nx = 0, ny = 0;
   std::vector<std::size_t> count;
 
-  centroid_grid(const triangle_mesh& m, const bbox& box, double side)
+  centroid_grid(const triangle_mesh& m, const svg_box& box, double side)
       : x0(box.x0), y0(box.y0), cell(side),
         nx(static_cast<std::size_t>((box.x1 - box.x0) / side) + 1),
         ny(static_cast<std::size_t>((box.y1 - box.y0) / side) + 1), count(nx * ny, 0) {
@@ -146,8 +146,8 @@ struct centroid_grid {
 /// separator vertices spread over the separators, the one whose square holds the most
 /// triangles (the least hole or outside), the one nearest the centre among equals.
 /// Complexity O(t).
-inline svg_window automatic_window(const triangle_mesh& m, const marked_edges& e, const bbox& box,
-                                   const svg_options& o) {
+inline svg_window automatic_window(const triangle_mesh& m, const marked_edges& e,
+                                   const svg_box& box, const svg_options& o) {
   const point centre{(box.x0 + box.x1) / 2, (box.y0 + box.y1) / 2};
   const double per =
       mesh_area(m) / static_cast<double>(std::max<std::size_t>(1, m.triangles.size()));

@@ -2,8 +2,8 @@
 /// Implementation details of pdd::write_svg: the viewport transform, colours and path output.
 #pragma once
 
-#include <pdd/io/detail/text.hpp>
 #include <pdd/core/point.hpp>
+#include <pdd/io/detail/text.hpp>
 #include <pdd/io/svg_options.hpp>
 
 #include <algorithm>
@@ -18,7 +18,7 @@
 namespace pdd::detail {
 
 /// Axis-aligned bounding box accumulator.
-struct bbox {
+struct svg_box {
   double x0 = std::numeric_limits<double>::infinity(), y0 = x0;
   double x1 = -std::numeric_limits<double>::infinity(), y1 = x1;
   void add(point p) {
@@ -34,7 +34,7 @@ struct bbox {
 /// Maps model coordinates to SVG pixels: uniform scale, y axis flipped, fits width_px.
 class svg_canvas {
 public:
-  svg_canvas(text_sink& out, bbox box, const svg_options& o) : out_(out), o_(o) {
+  svg_canvas(text_sink& out, svg_box box, const svg_options& o) : out_(out), o_(o) {
     if (box.empty()) box = {0.0, 0.0, 1.0, 1.0};
     const double inner = std::max(1.0, o.width_px - 2.0 * o.margin_px);
     const double dx = box.x1 - box.x0, dy = box.y1 - box.y0;

@@ -27,8 +27,8 @@ inline void check_svg_pslg(const pslg& g, const std::filesystem::path& path) {
                   " refers to a missing vertex");
 }
 
-inline bbox pslg_box(const pslg& g) {
-  bbox b;
+inline svg_box pslg_box(const pslg& g) {
+  svg_box b;
   for (const point& p : g.vertices)
     b.add(p);
   for (const point& p : g.holes)
