@@ -102,6 +102,23 @@ TEST(FacePath, AutomaticNFallsBackToTheWholeDomainWhenTheEstimateExceedsTheBound
   EXPECT_GT(decoupled.mesh.triangles.size(), automatic.mesh.triangles.size());
 }
 
+// Above Ruppert's bound the kernels split the path beside the small subdomains this path makes
+// (la.poly at 28-30 deg ran out of invariance repairs): MADD from the faces, as before.
+TEST(FacePath, AboveRuppertsAngleBoundTheFacesAreDecoupledAsBefore) {
+  const pdd::pslg g = thinning_wedge();
+  pdd::generate_options o = options(0.003, 4);
+  o.criteria.min_angle_deg = 30.0;
+  const pdd::generate_result r = pdd::generate(g, o);
+  EXPECT_EQ(r.statistics.path, "graded");
+  EXPECT_NE(r.statistics.plan_reason.find("an angle bound above 20.7 deg"), std::string::npos)
+      << r.statistics.plan_reason;
+  pdd::verify_options vo;
+  vo.criteria = o.criteria;
+  pdd::pslg d = g;
+  d.rule = pdd::domain_rule::triangle;
+  EXPECT_TRUE(pdd::verify(r.mesh, d, vo).ok());
+}
+
 // The cost rule ranks pieces by how much shorter than the mesh they are: none for an edge left
 // whole, sqrt(h / l) per split point, at least 1 per point.
 TEST(FacePath, APieceMuchShorterThanTheMeshCostsMore) {

@@ -7,9 +7,10 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/decomposition.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
+#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -90,12 +91,23 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
   return !no("a feature smaller than the mesh (" + numbers + "): Algorithm 8.3");
 }
 
+/// Whether the geometric path on a general PSLG is planned under criteria c: only up to
+/// Ruppert's bound (circumradius-to-shortest-edge ratio at least sqrt 2, 20.7 deg), under which
+/// the decoupling theorems hold. Above it the path is kept only where the kernels never split
+/// it in practice, and on the small subdomains this path makes beside tiny features they did:
+/// la.poly --subdomains 4 at 28 deg (--max-area 0.01) and 30 deg (0.003, 0.001) ran out of
+/// invariance repairs, where MADD from the faces meshes.
+inline bool face_path_angle_ok(const mesh_criteria& c) {
+  return !(c.ratio_bound() < std::numbers::sqrt2 * (1.0 - 1e-12));
+}
+
 /// Whether the geometric path is planned on a domain that is not one of closed loops, with
 /// regions `regions` (pdd::madd_start), for N = `subdomains`, `area_min` as above; appends the
-/// reason to `reason` (which says already why N). Unlike on closed loops, geometric sizing auto
-/// plans it for a requested N too: the faces are subdomains whatever N, so a small feature of
-/// a face sets k_i of that face and of its neighbours (relation 7.1) along every interface
-/// unless the decomposition is graded towards it (detail::face_geometric_decompose).
+/// reason to `reason` (which says already why N); only where face_path_angle_ok. Unlike on
+/// closed loops, geometric sizing auto plans it for a requested N too: the faces are subdomains
+/// whatever N, so a small feature of a face sets k_i of that face and of its neighbours
+/// (relation 7.1) along every interface unless the decomposition is graded towards it
+/// (detail::face_geometric_decompose).
 inline bool choose_face_geometric_path(const madd_start* regions, const generate_options& o,
                                        double area_min, std::size_t subdomains,
                                        std::string& reason) {
@@ -108,6 +120,9 @@ inline bool choose_face_geometric_path(const madd_start* regions, const generate
   if (o.decoupling.k_override > 0.0 || o.decoupling.k_scale != 1.0)
     return no("decoupling.k_override or k_scale set: the uniform path");
   if (!std::isfinite(area_min)) return no("no area bound");
+  if (!face_path_angle_ok(o.criteria))
+    return no("an angle bound above 20.7 deg (the kernels split the path beside tiny features "
+              "there)");
   if (o.geometric_sizing == geometric_sizing_mode::on) {
     reason += "; geometric sizing on";
     return true;
