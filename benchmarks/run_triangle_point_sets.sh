@@ -47,8 +47,8 @@ line = {"program": label, "input": name, "switches": sw,
 open(out, "a").write(json.dumps(line) + "\n")
 PY
 }
-for case in "m1 Q" "k100 Qq" "k100 Qqa0.00001" "r2 Q" "r2 Qq" "r2 Qqa0.002" "r2 Qq30a0.001" \
-  "rand200 Qa0.01"; do
+for case in "m1 Q" "k100 Qq" "k100 Qqa0.00001" "k100 Qq30" "k100 Qq32.5" "k100 Qq33.8" "r2 Q" \
+  "r2 Qq" "r2 Qqa0.002" "r2 Qq30a0.001" "rand200 Qa0.01"; do
   set -- $case
   run "Triangle 1.6" 0 "$1" "$2" "$triangle" -"$2" "$dir/$1.node"
   run "pdd-triangle --threads 1" 0 "$1" "$2" "$pdd" -"$2" "$dir/$1.node" --threads 1
