@@ -119,6 +119,47 @@ TEST(FacePath, AboveRuppertsAngleBoundTheFacesAreDecoupledAsBefore) {
   EXPECT_TRUE(pdd::verify(r.mesh, d, vo).ok());
 }
 
+// A fuzz finding (tests/fuzz, seed 1): a square with three wedges at pinch vertices, holes
+// between; at --subdomains 2 Algorithm 7.1 could not measure a subdomain whose loops touch at a
+// vertex and generate() refused a valid input ("duplicate vertices 1 and 4"). The rounds now
+// stop there, the reason says so, and MADD's own decomposition meshes.
+TEST(FacePath, APinchedFaceStopsTheRoundsInsteadOfRefusingTheInput) {
+  pdd::pslg g;
+  for (const pdd::point p : std::vector<pdd::point>{{0, 0},
+                                                    {5, 0},
+                                                    {10, 0},
+                                                    {10, 10},
+                                                    {0, 10},
+                                                    {6.455443589413995, 0.3628828433995016},
+                                                    {6.060660171779821, 1.0606601717798212},
+                                                    {5, 6},
+                                                    {6.969615506024416, 6.347296355333861},
+                                                    {6.147152872702092, 7.638304088577984},
+                                                    {5.5176380902050415, 7.931851652578136},
+                                                    {4, 7.732050807568878},
+                                                    {3.1873844259267, 6.8452365234813985},
+                                                    {3.120614758428183, 5.315959713348663},
+                                                    {4.000001811150368, 4.120614758428184},
+                                                    {5.845236523481399, 4.1873844259267}})
+    g.add_vertex(p);
+  for (const auto& [a, b] : std::vector<std::pair<pdd::index_t, pdd::index_t>>{
+           {0, 1},  {1, 2},   {2, 3},  {3, 4},  {4, 0},   {1, 5},   {5, 6},
+           {6, 1},  {7, 8},   {8, 9},  {9, 7},  {7, 10},  {10, 11}, {11, 7},
+           {7, 12}, {12, 13}, {13, 7}, {7, 14}, {14, 15}, {15, 7}})
+    g.add_segment(a, b);
+  g.holes = {{5.838701253731273, 0.4745143383931076},
+             {6.038922792908836, 6.661866814637281},
+             {4.8392126967350135, 7.4745143383931076},
+             {6.038922792908836, 6.66182078943354},
+             {5.053732078943354, 4.769333061451628}};
+  const pdd::generate_result r = pdd::generate(g, options(100.0 / 420.37, 2));
+  EXPECT_EQ(r.statistics.path, "geometric");
+  EXPECT_NE(r.statistics.plan_reason.find("no further round: Algorithm 7.1 stopped"),
+            std::string::npos)
+      << r.statistics.plan_reason;
+  EXPECT_TRUE(pdd::verify(r.mesh, g).ok());
+}
+
 // The cost rule ranks pieces by how much shorter than the mesh they are: none for an edge left
 // whole, sqrt(h / l) per split point, at least 1 per point.
 TEST(FacePath, APieceMuchShorterThanTheMeshCostsMore) {

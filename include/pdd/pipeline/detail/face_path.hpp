@@ -13,8 +13,8 @@
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/decomposition.hpp>
-#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/decoupling/feature_driven_sizing.hpp>
+#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -57,6 +57,8 @@ struct face_path_result {
   decomposition parts;
   std::vector<face_round> rounds;
   std::size_t chosen = 0;
+  /// Why the rounds stopped early, when Algorithm 7.1 could not run (empty otherwise).
+  std::string stopped;
 };
 
 /// The triangles the split points of path edge `e` of `dd` are estimated to add:
@@ -81,7 +83,8 @@ inline double path_edge_cost(const decoupled_decomposition& dd, const path_edge&
 
 /// The cost of the graded path (shields, then pdd::decouple_graded) on a copy of d, with k_i
 /// from the minima of min(max_area, field) over each subdomain; nullopt where the path cannot
-/// be built (pdd::decoupling_error).
+/// be built (pdd::decoupling_error, or pdd::geometry_error from the shields: a round is then
+/// not taken, and MADD's own decomposition meshes as it did before this path).
 template <Executor E>
 std::optional<face_path_cost> graded_path_cost(decomposition d, const mesh_criteria& criteria,
                                                const any_sizing& field, const E& executor) {
@@ -95,6 +98,8 @@ std::optional<face_path_cost> graded_path_cost(decomposition d, const mesh_crite
     return c;
   } catch (const decoupling_error&) {
     return std::nullopt;
+  } catch (const geometry_error&) { // the shields of a subdomain the round's decomposition
+    return std::nullopt;            // pinches (fuzz: "duplicate vertices 1 and 4")
   }
 }
 
@@ -115,12 +120,13 @@ inline constexpr double face_driver_gradation = 2.9;
 
 /// The geometric path's decomposition of a general PSLG: round 0 is `initial` (MADD from the
 /// faces); each further round is Algorithm 7.1 (at least n subdomains, at most
-/// geometric_cap(cap, n); R1 = R2 = face_driver_gradation; Condition 3 T = target_subdomain_triangles
-/// for automatic N) driven by pdd::feature_driven_sizing over the faces' tiny features
-/// (detail::region_vertex_gaps; o.geometric_loop's first cap and slope, the cap x8 and the
-/// slope / 4 per round, at most max_rounds rounds in all); the round whose graded path is
+/// geometric_cap(cap, n); R1 = R2 = face_driver_gradation; Condition 3 T =
+/// target_subdomain_triangles for automatic N) driven by pdd::feature_driven_sizing over the faces'
+/// tiny features (detail::region_vertex_gaps; o.geometric_loop's first cap and slope, the cap x8
+/// and the slope / 4 per round, at most max_rounds rounds in all); the round whose graded path is
 /// estimated to add the fewest triangles (path_edge_cost) is returned. Stops early when no
-/// feature binds or a round is capped.
+/// feature binds, a round is capped, or Algorithm 7.1 throws pdd::geometry_error (it cannot
+/// measure a subdomain whose loops touch at a vertex; `stopped` says so).
 /// \throws as pdd::gradation_controlled_decompose. Deterministic for every executor.
 template <GraphPartitioner P, Executor E>
 face_path_result face_geometric_decompose(decomposition initial, const generate_options& o,
@@ -147,7 +153,13 @@ face_path_result face_geometric_decompose(decomposition initial, const generate_
         tiny_feature_driver(gaps, o.sizing, o.criteria.max_area, features, slope, found);
     if (found == 0) break;
     gradation_report rep;
-    decomposition d = gradation_controlled_decompose(regions, driver, go, mo, partitioner, &rep);
+    decomposition d;
+    try {
+      d = gradation_controlled_decompose(regions, driver, go, mo, partitioner, &rep);
+    } catch (const geometry_error& e) { // a leaf Algorithm 7.1 cannot measure (a pinched face)
+      out.stopped = e.what();
+      break;
+    }
     out.rounds.push_back({d.subdomains.size(), found, slope,
                           graded_path_cost(d, o.criteria, o.sizing, executor), rep.capped});
     if (cheaper(out.rounds.back(), out.rounds[out.chosen])) {
@@ -176,6 +188,7 @@ inline std::string face_path_reason(const face_path_result& r, const generate_op
                          number_text(std::round(x.cost->extra_triangles)) + " triangles more"
                    : "no path");
   }
+  if (!r.stopped.empty()) out += "; no further round: Algorithm 7.1 stopped: " + r.stopped;
   out += "; round " + std::to_string(r.chosen) + " taken, the fewest estimated more";
   if (o.geometric_field == geometric_mesh_field::algorithm_8_3)
     out += "; meshed with the user's field: Algorithm 8.3's F is built on domains of closed "
