@@ -45,6 +45,7 @@ pdd::generate_options options(double max_area, std::size_t subdomains) {
   o.criteria.max_area = max_area;
   o.subdomains = subdomains;
   o.threads = 2;
+  o.geometric_sizing = pdd::geometric_sizing_mode::on; // auto does not plan it yet
   return o;
 }
 
