@@ -10,7 +10,6 @@
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
-#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
