@@ -234,7 +234,9 @@ py::dict verify(const py::dict& tri, const py::dict& mesh, double min_angle,
 
 /// The whole domain meshed by the kernel under a sizing field, small angles shielded first
 /// (as pdd::pipeline::mesh_whole does for a uniform bound); a domain that is not one of closed
-/// loops by Triangle's rule, unshielded (the kernel's clusters, as the pipeline does).
+/// loops by Triangle's rule, or any domain above Ruppert's angle bound (where the shields do
+/// not hold, pdd::within_ruppert_bound), unshielded (the kernel's own small-angle rule, as the
+/// pipeline does).
 template <SizingField S>
 triangle_mesh mesh_with_sizing(const pslg& g, const mesh_criteria& c, const S& sizing,
                                generate_statistics& st) {
@@ -245,6 +247,11 @@ triangle_mesh mesh_with_sizing(const pslg& g, const mesh_criteria& c, const S& s
     whole.rule = domain_rule::triangle;
     mesher_result r = cgal::mesher{}.mesh(whole, c, sizing);
     st.general_domain = true;
+    st.triangles = r.mesh.triangles.size();
+    return std::move(r.mesh);
+  }
+  if (!c.within_ruppert_bound()) {
+    mesher_result r = cgal::mesher{}.mesh(g, c, sizing);
     st.triangles = r.mesh.triangles.size();
     return std::move(r.mesh);
   }

@@ -18,6 +18,17 @@ inline double ratio_for_min_angle(double min_angle_deg) {
   return 1.0 / (2.0 * std::sin(min_angle_deg * std::numbers::pi / 180.0));
 }
 
+/// Whether an angle bound is at most Ruppert's (circumradius-to-shortest-edge ratio at least
+/// sqrt 2, 20.7048 deg): the bound under which the decoupling theorems hold, the shields of
+/// small input angles (Theorem 24 (5): no shield edge is split) and the invariance of the
+/// decoupling path among them. Above it the kernels did split both (Triangle's Texas and the
+/// Bahamas at 31-33 deg, CGAL's kernel then refining without end beside a shield), so pdd
+/// meshes small input angles there with the kernel's own rule and decouples only domains that
+/// have none (pipeline's plan).
+inline bool within_ruppert_bound(double min_angle_deg) {
+  return !(ratio_for_min_angle(min_angle_deg) < std::numbers::sqrt2 * (1.0 - 1e-12));
+}
+
 /// Quality criteria for Delaunay refinement.
 struct mesh_criteria {
   /// Smallest angle allowed in a triangle, degrees (default: ratio sqrt 2, 20.7048 deg).
@@ -30,6 +41,8 @@ struct mesh_criteria {
 
   /// The circumradius-to-shortest-edge bound B that min_angle_deg stands for.
   double ratio_bound() const { return ratio_for_min_angle(min_angle_deg); }
+  /// pdd::within_ruppert_bound(min_angle_deg).
+  bool within_ruppert_bound() const { return pdd::within_ruppert_bound(min_angle_deg); }
   /// CGAL's shape bound: sin^2 of the minimum angle (0.125 for 20.7 deg).
   double shape_bound() const {
     const double s = std::sin(min_angle_deg * std::numbers::pi / 180.0);

@@ -4,13 +4,14 @@
 /// makes, and by pdd::verify_pieces on the pieces of a streamed mesh: one verdict everywhere.
 #pragma once
 
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/shielding/shield_statistics.hpp>
 
-#include <optional>
+#include <cstddef>
 #include <vector>
 
 namespace pdd {
@@ -19,6 +20,9 @@ namespace pdd {
 /// from the angle bound, found once per domain for many meshes:
 /// - a domain of closed loops (pdd::has_closed_loops; the decoupled pipeline shields its input
 ///   angles < 60 deg, dissertation 8.1): the shielded triangles (pdd::find_shielded_triangles);
+///   above Ruppert's bound (pdd::within_ruppert_bound), where pdd meshes such a domain whole
+///   and unshielded, also the triangles the kernels' own small-angle rules leave
+///   (pdd::find_cluster_exempt_triangles);
 /// - any other domain, read by Triangle's rule (the kernel meshes its faces with CGAL's
 ///   clusters at small angles between segments): the cluster triangles
 ///   (pdd::find_cluster_exempt_triangles).
@@ -27,24 +31,29 @@ namespace pdd {
 class quality_exemptions {
 public:
   /// \throws geometry_error as pdd::validate. Complexity O(n log n).
-  explicit quality_exemptions(const pslg& domain) {
-    if (domain.rule == domain_rule::triangle && !has_closed_loops(domain))
-      general_.emplace(domain);
-    else
-      angles_ = find_small_input_angles(domain);
+  explicit quality_exemptions(const pslg& domain)
+      : domain_(domain),
+        general_(domain.rule == domain_rule::triangle && !has_closed_loops(domain)) {
+    if (!general_) angles_ = find_small_input_angles(domain);
   }
 
   /// Per triangle of m: 1 when it is exempt from the angle bound min_angle_deg.
   std::vector<char> operator()(const triangle_mesh& m, double min_angle_deg) const {
-    return general_ ? find_cluster_exempt_triangles(m, *general_, min_angle_deg)
-                    : find_shielded_triangles(m, angles_);
+    if (general_) return find_cluster_exempt_triangles(m, domain_, min_angle_deg);
+    std::vector<char> exempt = find_shielded_triangles(m, angles_);
+    if (within_ruppert_bound(min_angle_deg) || angles_.apexes.empty()) return exempt;
+    const std::vector<char> cluster = find_cluster_exempt_triangles(m, domain_, min_angle_deg);
+    for (std::size_t t = 0; t < exempt.size(); ++t)
+      exempt[t] = exempt[t] || cluster[t];
+    return exempt;
   }
 
   /// The domain's small input angles (closed loops; empty for another domain).
   const small_input_angles& angles() const noexcept { return angles_; }
 
 private:
-  std::optional<pslg> general_; ///< the domain when it is not one of closed loops
+  pslg domain_;
+  bool general_ = false; ///< not one of closed loops (Triangle's rule)
   small_input_angles angles_;
 };
 

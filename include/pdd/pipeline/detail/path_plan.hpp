@@ -77,6 +77,9 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
   if (o.decoupling.k_override > 0.0 || o.decoupling.k_scale != 1.0)
     return no("decoupling.k_override or k_scale set: the uniform path");
   if (!std::isfinite(area_min)) return no("no area bound: Algorithm 8.3 scales a bounded field");
+  if (!o.criteria.within_ruppert_bound())
+    return no("an angle bound above 20.7 deg: the kernels split the path beside the small "
+              "subdomains of tiny features there (the Bahamas at 25-30 deg, --max-area 1e-5)");
   if (o.geometric_sizing == geometric_sizing_mode::on) return !no("geometric sizing on");
   // automatic: the uniform --max-area with automatic N (a field or a requested N keep their
   // graded or uniform path unless geometric sizing is on)
@@ -97,7 +100,7 @@ inline bool choose_geometric_path(const pslg& domain, const generate_options& o,
 /// la.poly --subdomains 4 at 28 deg (--max-area 0.01) and 30 deg (0.003, 0.001) ran out of
 /// invariance repairs, where MADD from the faces meshes.
 inline bool face_path_angle_ok(const mesh_criteria& c) {
-  return !(c.ratio_bound() < std::numbers::sqrt2 * (1.0 - 1e-12));
+  return c.within_ruppert_bound();
 }
 
 /// Whether the geometric path is planned on a domain that is not one of closed loops, with

@@ -9,7 +9,9 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/geometry/properties.hpp>
 #include <pdd/madd/madd_start.hpp>
+#include <pdd/mesh/verify.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
 #include <pdd/pipeline/options.hpp>
 #include <pdd/pipeline/planning.hpp>
@@ -76,18 +78,67 @@ inline std::size_t planned_subdomains(const generate_options& o, double estimate
   return general ? general_domain_subdomains(n, *general, reason) : n;
 }
 
+/// Whether a domain of closed loops is meshed whole because of its small input angles: the
+/// angle bound is above Ruppert's (pdd::within_ruppert_bound), where neither the shields nor
+/// the decoupling path among them hold (Triangle's Texas at 33 deg: CGAL's kernel refined
+/// without end beside a shield; the native kernel split it from 31 deg; a 3-element airfoil
+/// at 33 deg, --subdomains 4: the path split beyond repair), and some input angle is below
+/// 60 deg, the shields' threshold. Then `reason` receives why. Complexity O(n log n).
+inline bool small_angles_above_ruppert(const pslg& domain, const mesh_criteria& c,
+                                       std::string& reason) {
+  if (c.within_ruppert_bound()) return false;
+  index_t apex = no_index;
+  const double smallest = min_domain_angle_deg(domain, &apex);
+  if (!(smallest < 60.0)) return false;
+  reason = "one subdomain: an angle bound of " + number_text(c.min_angle_deg) +
+           " deg, above Ruppert's 20.7 deg, and input angles below 60 deg (" +
+           number_text(smallest) + " deg at vertex " + std::to_string(apex) +
+           "): the shields and the decoupling path hold up to 20.7 deg only (Theorem 24), so "
+           "the kernel meshes the whole domain with its own rule at the small angles";
+  return true;
+}
+
+/// The kernel's unshielded mesh of a domain of closed loops above Ruppert's bound, verified
+/// (pdd::verify, the domain as given): beyond the bound a kernel's small-angle rule is not
+/// proven to keep its split points on their segments (CGAL's kernel at 33 deg on the Bahamas,
+/// --max-area 1.6e-4: a split point 1e-14 from an input vertex and off its segment), so a mesh
+/// that fails is refused, never delivered: an input beyond what the kernel resolves.
+/// \throws pdd::unresolvable_input_error(-1, ...) naming the first failure.
+template <DelaunayMesher M>
+triangle_mesh mesh_verified_above_ruppert(const M& mesher, const pslg& domain,
+                                          const mesh_criteria& criteria, const any_sizing& sizing) {
+  triangle_mesh m = mesher.mesh(domain, criteria, sizing).mesh;
+  verify_options vo;
+  vo.criteria = criteria;
+  vo.rule_as_given = true;
+  const verification_report rep = sizing ? verify(m, domain, vo, sizing) : verify(m, domain, vo);
+  if (rep.ok()) return m;
+  throw unresolvable_input_error(
+      -1, "above Ruppert's bound (20.7 deg) the kernel's mesh of the small input angles fails "
+          "verification (" +
+              (rep.messages.empty() ? std::string("see pdd::verify") : rep.messages.front()) +
+              "); the native kernel meshes them by Triangle's rules (--kernel native), or bound "
+              "the angle at 20.7 deg");
+}
+
 /// The kernel on the whole domain, markers 0: a general domain as it is; a domain of closed
 /// loops with its input angles < 60 deg shielded first (pdd::shield with `shield_area`,
 /// Algorithm 8.2 with N = 1), the kernel on D' and the shielded triangles added as they are
-/// (`shielded_triangles` receives their number).
+/// (`shielded_triangles` receives their number); above Ruppert's bound
+/// (pdd::within_ruppert_bound, where Theorem 24 does not hold) unshielded, the kernel's own
+/// rule meshing the small angles as on a general domain (pdd::quality_exemptions exempts
+/// what that rule leaves).
 /// \throws pdd::meshing_error(-1, ...) from the kernel, or when it split a shield edge;
-/// pdd::geometry_error as pdd::shield.
+/// pdd::unresolvable_input_error as mesh_verified_above_ruppert; pdd::geometry_error as
+/// pdd::shield.
 template <DelaunayMesher M>
 triangle_mesh mesh_whole_domain(const M& mesher, const pslg& domain, bool general,
                                 const mesh_criteria& criteria, const any_sizing& sizing,
                                 double shield_area, std::size_t& shielded_triangles) {
   shielded_triangles = 0;
   if (general) return mesher.mesh(domain, criteria, sizing).mesh;
+  if (!criteria.within_ruppert_bound())
+    return mesh_verified_above_ruppert(mesher, domain, criteria, sizing);
   const shielded_domain sd = shield(domain, shield_area);
   shielded_triangles = sd.triangles.size();
   if (sd.triangles.empty()) return mesher.mesh(domain, criteria, sizing).mesh;
