@@ -365,6 +365,29 @@ TEST(Sinks, VtuDirectorySinkWritesEveryPiece) {
   }
 }
 
+TEST(DecoupledMeshing, RepairFailuresListTheFirstEightAndSayWhyAboveRupperts) {
+  pdd::decoupled_decomposition dd;
+  for (pdd::index_t e = 0; e < 12; ++e) {
+    pdd::path_edge pe;
+    pe.u = e;
+    pe.v = e + 1;
+    pe.k = 0.5;
+    dd.path.push_back(pe);
+  }
+  const std::map<pdd::index_t, std::vector<pdd::index_t>> failures{{3, {0, 1, 2, 3, 4}},
+                                                                   {7, {5, 6, 7, 8, 9, 10, 11}}};
+  pdd::mesh_criteria c;
+  const std::string at = pdd::describe_path_failures(dd, failures, c);
+  EXPECT_NE(at.find("subdomain 3, separator segment 0-1 (k 0.500000)"), std::string::npos) << at;
+  EXPECT_NE(at.find("subdomain 7, separator segment 7-8"), std::string::npos) << "the eighth";
+  EXPECT_EQ(at.find("separator segment 8-9"), std::string::npos) << "the ninth is counted only";
+  EXPECT_NE(at.find("; and 4 more"), std::string::npos) << at;
+  EXPECT_EQ(at.find("Ruppert"), std::string::npos) << "20.7 deg: the path is proven";
+  c.min_angle_deg = 34.0;
+  const std::string above = pdd::describe_path_failures(dd, failures, c);
+  EXPECT_NE(above.find("angle bound is 34 deg: mesh the domain whole"), std::string::npos) << above;
+}
+
 } // namespace
 
 } // namespace meshing_test

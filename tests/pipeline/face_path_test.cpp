@@ -105,13 +105,15 @@ TEST(FacePath, AutomaticNFallsBackToTheWholeDomainWhenTheEstimateExceedsTheBound
 
 // Above Ruppert's bound the kernels split the path beside the small subdomains this path makes
 // (la.poly at 28-30 deg ran out of invariance repairs): MADD from the faces, as before.
-TEST(FacePath, AboveRuppertsAngleBoundTheFacesAreDecoupledAsBefore) {
+TEST(FacePath, AboveRuppertsAngleBoundAThinningLayerIsMeshedWhole) {
+  // its 1.1 deg tip is an angle between segments below 60 deg (tests/pipeline/ruppert_bound_test)
   const pdd::pslg g = thinning_wedge();
   pdd::generate_options o = options(0.003, 4);
   o.criteria.min_angle_deg = 30.0;
   const pdd::generate_result r = pdd::generate(g, o);
-  EXPECT_EQ(r.statistics.path, "graded");
-  EXPECT_NE(r.statistics.plan_reason.find("an angle bound above 20.7 deg"), std::string::npos)
+  EXPECT_EQ(r.statistics.path, "monolithic");
+  EXPECT_EQ(r.statistics.subdomains, 1u);
+  EXPECT_NE(r.statistics.plan_reason.find("above Ruppert's 20.7 deg"), std::string::npos)
       << r.statistics.plan_reason;
   pdd::verify_options vo;
   vo.criteria = o.criteria;

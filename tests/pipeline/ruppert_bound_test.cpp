@@ -85,6 +85,18 @@ TEST(RuppertBound, AtItTheSameDomainIsDecoupledWithShields) {
   expect_verified(r.mesh, g, options(20.7, 4).criteria);
 }
 
+TEST(RuppertBound, AboveItAGeneralDomainWithSmallAnglesBetweenSegmentsIsMeshedWhole) {
+  pdd::pslg g = pdd::test::unit_square(); // and its diagonal: 45 deg between segments
+  g.segments.push_back({0, 2, 3});
+  const pdd::run_plan above = pdd::plan_run(g, options(30.0, 4), 2).plan;
+  EXPECT_EQ(above.subdomains, 1u);
+  EXPECT_NE(above.reason.find("above Ruppert's 20.7 deg"), std::string::npos) << above.reason;
+  const pdd::generate_result r = pdd::generate(g, options(30.0, 4));
+  EXPECT_EQ(r.statistics.subdomains, 1u);
+  expect_verified(r.mesh, g, options(30.0, 4).criteria);
+  EXPECT_GE(pdd::plan_run(g, options(20.7, 4), 2).plan.subdomains, 4u) << "decoupled at 20.7";
+}
+
 TEST(RuppertBound, AboveItADomainWithoutSmallAnglesIsDecoupledAndNotGeometric) {
   const pdd::pslg square = pdd::test::unit_square();
   pdd::generate_options o = options(30.0, 8);

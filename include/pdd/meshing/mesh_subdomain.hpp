@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
 #include <map>
 #include <set>
@@ -151,16 +152,31 @@ repair_decoupling_path(decoupled_decomposition& dd,
   return {redo.begin(), redo.end()};
 }
 
-/// The message of a decoupling_error for repairs that ran out: every failing subdomain with
-/// its split separator segments and their k.
+/// The message of a decoupling_error for repairs that ran out: the failing subdomains with
+/// their split separator segments and k (the first 8, then how many more: the Bahamas at 30 deg
+/// listed 300), and, for an angle bound above Ruppert's (criteria), that the path is proven only
+/// up to 20.7 deg and how to mesh anyway.
 inline std::string describe_path_failures(const decoupled_decomposition& dd,
-                                          const std::map<index_t, std::vector<index_t>>& failures) {
+                                          const std::map<index_t, std::vector<index_t>>& failures,
+                                          const mesh_criteria& criteria) {
+  constexpr std::size_t listed = 8;
   std::string msg;
+  std::size_t count = 0;
   for (const auto& failure : failures)
     for (const index_t e : failure.second)
-      msg += (msg.empty() ? "" : "; ") + std::string("subdomain ") + std::to_string(failure.first) +
-             ", separator segment " + std::to_string(dd.path[e].u) + "-" +
-             std::to_string(dd.path[e].v) + " (k " + std::to_string(dd.path[e].k) + ")";
+      if (++count <= listed)
+        msg += (msg.empty() ? "" : "; ") + std::string("subdomain ") +
+               std::to_string(failure.first) + ", separator segment " +
+               std::to_string(dd.path[e].u) + "-" + std::to_string(dd.path[e].v) + " (k " +
+               std::to_string(dd.path[e].k) + ")";
+  if (count > listed) msg += "; and " + std::to_string(count - listed) + " more";
+  if (!criteria.within_ruppert_bound()) {
+    char angle[32];
+    std::snprintf(angle, sizeof angle, "%g", criteria.min_angle_deg);
+    msg += "; the path is proven up to Ruppert's angle bound, 20.7 deg, and the angle bound is " +
+           std::string(angle) +
+           " deg: mesh the domain whole (one subdomain) or bound the angle at 20.7 deg";
+  }
   return msg;
 }
 

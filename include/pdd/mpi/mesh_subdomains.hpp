@@ -177,9 +177,10 @@ distributed_meshing_statistics mesh_subdomains(MPI_Comm comm, decoupled_decompos
     const auto failures = detail::merge_round(records, stats);
     if (failures.empty()) break;
     if (stats.meshing.repair_rounds >= options.max_repairs)
-      throw decoupling_error(
-          "the decoupling path was split by the kernel and " + std::to_string(options.max_repairs) +
-          " repair rounds did not fix it: " + describe_path_failures(dd, failures));
+      throw decoupling_error("the decoupling path was split by the kernel and " +
+                             std::to_string(options.max_repairs) +
+                             " repair rounds did not fix it: " +
+                             describe_path_failures(dd, failures, options.criteria));
     ++stats.meshing.repair_rounds;
     ids = repair_decoupling_path(dd, failures);
     stats.meshing.remeshed_subdomains += ids.size();

@@ -140,8 +140,7 @@ inline planned_run plan_run(pslg domain, const generate_options& o, unsigned thr
                                                p.reason)
           : detail::choose_geometric_path(r.domain, o, p.decoupling_criteria.max_area, p.subdomains,
                                           p.estimate.triangles, p.reason);
-  if (p.subdomains > 1 && !p.general_domain &&
-      detail::small_angles_above_ruppert(r.domain, o.criteria, p.reason))
+  if (p.subdomains > 1 && detail::small_angles_above_ruppert(r.domain, o.criteria, p.reason))
     p.subdomains = 1;
   p.path = p.subdomains <= 1 ? mesh_path::monolithic : detail::decoupled_path(o, geometric);
   p.gradation_controlled = o.sizing && p.subdomains > 1 && p.path != mesh_path::uniform;

@@ -63,9 +63,9 @@ public:
   /// again. \throws pdd::decoupling_error when max_repairs rounds have been used.
   std::vector<index_t> prepare_repair(unsigned max_repairs) {
     if (stats.repair_rounds >= max_repairs)
-      throw decoupling_error(
-          "the decoupling path was split by the kernel and " + std::to_string(max_repairs) +
-          " repair rounds did not fix it: " + describe_path_failures(dd_, failures_));
+      throw decoupling_error("the decoupling path was split by the kernel and " +
+                             std::to_string(max_repairs) + " repair rounds did not fix it: " +
+                             describe_path_failures(dd_, failures_, options_.criteria));
     ++stats.repair_rounds;
     std::vector<index_t> redo = repair_decoupling_path(dd_, failures_);
     failures_.clear();

@@ -9,7 +9,7 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/geometry/properties.hpp>
+#include <pdd/geometry/domain_angles.hpp>
 #include <pdd/madd/madd_start.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
@@ -78,21 +78,23 @@ inline std::size_t planned_subdomains(const generate_options& o, double estimate
   return general ? general_domain_subdomains(n, *general, reason) : n;
 }
 
-/// Whether a domain of closed loops is meshed whole because of its small input angles: the
-/// angle bound is above Ruppert's (pdd::within_ruppert_bound), where neither the shields nor
-/// the decoupling path among them hold (Triangle's Texas at 33 deg: CGAL's kernel refined
-/// without end beside a shield; the native kernel split it from 31 deg; a 3-element airfoil
-/// at 33 deg, --subdomains 4: the path split beyond repair), and some input angle is below
-/// 60 deg, the shields' threshold. Then `reason` receives why. Complexity O(n log n).
+/// Whether a domain is meshed whole because of its small input angles: the angle bound is
+/// above Ruppert's (pdd::within_ruppert_bound), where neither the shields nor the decoupling
+/// path beside small angles hold (Triangle's Texas at 33 deg: CGAL's kernel refined without end
+/// beside a shield; the native kernel split it from 31 deg; a 3-element airfoil at 33-34 deg:
+/// the path split beyond repair), and some angle of the domain between segments
+/// (pdd::domain_angles) is below 60 deg, the shields' and the clusters' threshold. Then
+/// `reason` receives why. Complexity O(n log n).
 inline bool small_angles_above_ruppert(const pslg& domain, const mesh_criteria& c,
                                        std::string& reason) {
   if (c.within_ruppert_bound()) return false;
-  index_t apex = no_index;
-  const double smallest = min_domain_angle_deg(domain, &apex);
-  if (!(smallest < 60.0)) return false;
+  domain_angle smallest;
+  for (const domain_angle& a : domain_angles(domain))
+    if (a.angle_deg < smallest.angle_deg) smallest = a;
+  if (!(smallest.angle_deg < 60.0)) return false;
   reason = "one subdomain: an angle bound of " + number_text(c.min_angle_deg) +
            " deg, above Ruppert's 20.7 deg, and input angles below 60 deg (" +
-           number_text(smallest) + " deg at vertex " + std::to_string(apex) +
+           number_text(smallest.angle_deg) + " deg at vertex " + std::to_string(smallest.vertex) +
            "): the shields and the decoupling path hold up to 20.7 deg only (Theorem 24), so "
            "the kernel meshes the whole domain with its own rule at the small angles";
   return true;
