@@ -53,14 +53,16 @@ struct madd_options {
   int max_encroachment_depth = 8;
   /// Separator smoothing (4.2): angle-quality f0 and conformity f1 weights on the graph
   /// edges before the partition, a local search minimising the weighted separator cost with
-  /// the larger part <= L_b after it. Off by default: measured on the pipe, key, Lake
-  /// Superior and guitar domains (N = 256) it shortened the separators by 0.1-1% and changed
-  /// the smallest separator angle by -1.4..+3.6 degrees, but the local search's trade of
-  /// balance for length raised the mean larger-child fraction from 0.53 to 0.58 and lowered
-  /// the smallest subdomain from 0.6 to 0.4-0.5 of the mean area.
+  /// the larger part <= max_part_fraction after it (or no larger than the partitioner left
+  /// it). Off by default: measured on the pipe, key, Lake Superior and guitar domains (N =
+  /// 256) it shortened the separators by 0.1-1% and changed the smallest separator angle by
+  /// -1.4..+3.6 degrees. Its local search used to be bounded by L_b (0.75), and its trade of
+  /// balance for length raised the largest/mean subdomain area to 1.59-1.69 at N = 64 on Lake
+  /// Superior, the guitar, the Bahamas and a 3-element airfoil (1.31-1.48 unsmoothed); bounded
+  /// by the partitioner's fraction, 1.29-1.47 (issue 36 item 4).
   bool smoothing = false;
   /// L_b: a split whose larger child exceeds this fraction of the area is retried with more
-  /// refinement (at most two more levels, the best is kept); the smoothing's bound too.
+  /// refinement (at most two more levels, the best is kept).
   double imbalance_bound = 0.75;
   /// The balance bound given to the graph partitioner (bisection_options).
   double max_part_fraction = 0.55;

@@ -94,7 +94,8 @@ inline bool part_connected_without(const partition_graph& pg, const std::vector<
 
 /// Second smoothing step (4.2): moves single nodes across the cut while that lowers the
 /// weighted separator cost (f0 f1 times the length), keeps both parts connected, keeps the
-/// larger part <= L_b of the total (or no larger than before) and pinches no child.
+/// larger part <= `bound` of the total (or no larger than before; MADD passes
+/// madd_options::max_part_fraction, the partitioner's own balance) and pinches no child.
 inline std::size_t smooth_bisection(const madd_triangulation& tr, const madd_graph& g,
                                     const partition_graph& pg, std::vector<std::uint8_t>& np,
                                     double bound) {
@@ -216,7 +217,7 @@ bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_grap
     const partition_graph pg = contracted_graph(g);
     std::vector<std::uint8_t> np = connected_bisection(pg, partitioner, bo);
     if (o.graph.smoothing)
-      out.smoothing_moves += smooth_bisection(tr, g, pg, np, o.imbalance_bound);
+      out.smoothing_moves += smooth_bisection(tr, g, pg, np, o.max_part_fraction);
     const std::vector<std::uint8_t> part = cell_parts(g, np);
     const std::vector<std::uint32_t> bad = pinch_vertices(tr, g, part);
     if (bad.empty()) {
