@@ -10,6 +10,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/geometry/domain_angles.hpp>
+#include <pdd/geometry/properties.hpp>
 #include <pdd/madd/madd_start.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/pipeline/detail/path_plan.hpp>
@@ -129,7 +130,8 @@ triangle_mesh mesh_verified_above_ruppert(const M& mesher, const pslg& domain,
 /// (`shielded_triangles` receives their number); above Ruppert's bound
 /// (pdd::within_ruppert_bound, where Theorem 24 does not hold) unshielded, the kernel's own
 /// rule meshing the small angles as on a general domain (pdd::quality_exemptions exempts
-/// what that rule leaves).
+/// what that rule leaves) and the mesh verified (mesh_verified_above_ruppert); a domain with
+/// no input angle below 60 deg has no shields and is meshed as it is, unverified.
 /// \throws pdd::meshing_error(-1, ...) from the kernel, or when it split a shield edge;
 /// pdd::unresolvable_input_error as mesh_verified_above_ruppert; pdd::geometry_error as
 /// pdd::shield.
@@ -139,7 +141,7 @@ triangle_mesh mesh_whole_domain(const M& mesher, const pslg& domain, bool genera
                                 double shield_area, std::size_t& shielded_triangles) {
   shielded_triangles = 0;
   if (general) return mesher.mesh(domain, criteria, sizing).mesh;
-  if (!criteria.within_ruppert_bound())
+  if (!criteria.within_ruppert_bound() && min_domain_angle_deg(domain) < 60.0)
     return mesh_verified_above_ruppert(mesher, domain, criteria, sizing);
   const shielded_domain sd = shield(domain, shield_area);
   shielded_triangles = sd.triangles.size();
