@@ -82,8 +82,8 @@ inline std::size_t planned_subdomains(const generate_options& o, double estimate
 /// Whether a domain is meshed whole because of its small input angles: the angle bound is
 /// above Ruppert's (pdd::within_ruppert_bound), where neither the shields nor the decoupling
 /// path beside small angles hold (Triangle's Texas at 33 deg: CGAL's kernel refined without end
-/// beside a shield; the native kernel split it from 31 deg; a 3-element airfoil at 33-34 deg:
-/// the path split beyond repair), and some angle of the domain between segments
+/// beside a shield; the native kernel split it from 31 deg; the Bahamas at 25-30 deg: the path
+/// split beyond repair), and some angle of the domain between segments
 /// (pdd::domain_angles) is below 60 deg, the shields' and the clusters' threshold. Then
 /// `reason` receives why. Complexity O(n log n).
 inline bool small_angles_above_ruppert(const pslg& domain, const mesh_criteria& c,
