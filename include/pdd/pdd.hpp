@@ -20,12 +20,16 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>
 
-// level 1: concepts, geometry
+// level 1: triangulation
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
+
+// level 2: concepts, geometry
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/concepts/executor.hpp>
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/geometry/box_pairs.hpp>
 #include <pdd/geometry/domain_angles.hpp>
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/geometry/feature_gap.hpp>
@@ -36,7 +40,7 @@
 #include <pdd/geometry/properties.hpp>
 #include <pdd/geometry/validate.hpp>
 
-// level 2: sizing, partition, kernels, parallel
+// level 3: sizing, partition, kernels, parallel
 #include <pdd/kernels/cgal/criteria.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
 #include <pdd/parallel/parallel_for.hpp>
@@ -62,7 +66,7 @@
 #include <pdd/sizing/uniform.hpp>
 // pdd/sizing/expression.hpp (muParser) is not included here: it needs the pdd::expression target
 
-// level 3: madd
+// level 4: madd
 #include <pdd/core/decomposition.hpp>
 #include <pdd/madd/decompose.hpp>
 #include <pdd/madd/decomposition_measures.hpp>
@@ -73,7 +77,7 @@
 #include <pdd/madd/subdomain_pslg.hpp>
 #include <pdd/madd/validate_decomposition.hpp>
 
-// level 4: shielding
+// level 5: shielding
 #include <pdd/shielding/apply_shields.hpp>
 #include <pdd/shielding/graded_shields.hpp>
 #include <pdd/shielding/shield.hpp>
@@ -83,7 +87,7 @@
 #include <pdd/shielding/shielded_domain.hpp>
 #include <pdd/shielding/subdomain_shields.hpp>
 
-// level 5: decoupling
+// level 6: decoupling
 #include <pdd/decoupling/decouple.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/decoupling/decoupling_parameter.hpp>
@@ -93,7 +97,7 @@
 #include <pdd/decoupling/interface_split.hpp>
 #include <pdd/decoupling/invariance.hpp>
 
-// level 6: io, meshing
+// level 7: io, meshing
 #include <pdd/io/angle_histogram.hpp>
 #include <pdd/io/area_grid.hpp>
 #include <pdd/io/atomic_file.hpp>
@@ -110,7 +114,7 @@
 #include <pdd/meshing/mesh_subdomain.hpp>
 #include <pdd/meshing/mesh_subdomains.hpp>
 
-// level 7: mesh
+// level 8: mesh
 #include <pdd/mesh/cluster_exempt.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/mesh_statistics.hpp>
@@ -122,9 +126,9 @@
 #include <pdd/mesh/verify_pieces.hpp>
 #include <pdd/mesh/verifying_sink.hpp>
 
-// level 8: pipeline
+// level 9: pipeline
 #include <pdd/pipeline.hpp>
 #include <pdd/pipeline/system.hpp>
 
-// level 9: generate
+// level 10: generate
 #include <pdd/generate.hpp>

@@ -9,12 +9,7 @@
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/sizing/domain_region.hpp>
-
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
 
 #include <unordered_map>
 #include <utility>
@@ -23,14 +18,9 @@
 namespace pdd {
 
 namespace detail {
-using region_vertex_base = CGAL::Triangulation_vertex_base_with_info_2<index_t, epick>;
-using region_face_base = CGAL::Constrained_triangulation_face_base_2<
-    epick, CGAL::Triangulation_face_base_with_info_2<int, epick>>;
 /// The constrained triangulation of a subdomain's loops (vertex info: the region's vertex id;
 /// face info: the nesting level).
-using region_cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    epick, CGAL::Triangulation_data_structure_2<region_vertex_base, region_face_base>,
-    CGAL::No_constraint_intersection_tag>;
+using region_cdt = constrained_delaunay_2<index_t, int>;
 } // namespace detail
 
 /// The region of subdomain s of d: the constrained Delaunay triangulation of its loops (each

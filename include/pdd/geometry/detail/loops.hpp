@@ -7,12 +7,7 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
-
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
 
 #include <array>
 #include <cmath>
@@ -41,13 +36,9 @@ struct cdt_face_info {
   index_t face = no_index;
 };
 
-using cdt_vertex_base = CGAL::Triangulation_vertex_base_with_info_2<index_t, epick>;
-using cdt_face_base = CGAL::Constrained_triangulation_face_base_2<
-    epick, CGAL::Triangulation_face_base_with_info_2<cdt_face_info, epick>>;
-using cdt_tds = CGAL::Triangulation_data_structure_2<cdt_vertex_base, cdt_face_base>;
-/// The constrained Delaunay triangulation of a PSLG; constraints must not intersect.
-using pslg_cdt = CGAL::Constrained_Delaunay_triangulation_2<epick, cdt_tds,
-                                                            CGAL::No_constraint_intersection_tag>;
+/// The constrained Delaunay triangulation of a PSLG (vertex info: the PSLG vertex id);
+/// constraints must not intersect or pass through a vertex.
+using pslg_cdt = constrained_delaunay_2<index_t, cdt_face_info>;
 
 /// Comma-separated list of at most `limit` ids (then ", ...").
 template <class Ids>

@@ -2,14 +2,14 @@
 /// Implementation of pdd/geometry/validate.hpp: the individual checks.
 #pragma once
 
+#include <pdd/core/bbox.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/errors.hpp>
+#include <pdd/geometry/box_pairs.hpp>
 #include <pdd/geometry/detail/loops.hpp>
 #include <pdd/geometry/detail/pslg_faces.hpp>
 #include <pdd/geometry/loops.hpp>
 
-#include <CGAL/Bbox_2.h>
-#include <CGAL/box_intersection_d.h>
 #include <CGAL/intersections.h>
 
 #include <algorithm>
@@ -127,23 +127,21 @@ inline std::optional<segment_clash> classify_pair(const pslg& g, index_t s, inde
 }
 
 /// No two segments cross, overlap, or touch in the interior of one of them. Candidate pairs
-/// come from CGAL::box_self_intersection_d on the segments' bounding boxes
-/// (O(S log^2 S + K) for K box pairs); each is decided with exact predicates. Reports the
-/// clash with the smallest pair of segment ids (deterministic).
+/// come from pdd::for_each_box_pair on the segments' bounding boxes (O(S log S + K) for K box
+/// pairs); each is decided with exact predicates. Reports the clash with the smallest pair of
+/// segment ids (deterministic).
 inline void check_intersections(const pslg& g) {
-  using box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, index_t>;
-  std::vector<box> boxes;
+  std::vector<bbox> boxes;
   boxes.reserve(g.segments.size());
-  for (std::size_t s = 0; s < g.segments.size(); ++s) {
-    const point a = g.vertices[g.segments[s].a], b = g.vertices[g.segments[s].b];
-    boxes.emplace_back(CGAL::Bbox_2(std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x),
-                                    std::max(a.y, b.y)),
-                       static_cast<index_t>(s));
+  for (const segment& sg : g.segments) {
+    const point a = g.vertices[sg.a], b = g.vertices[sg.b];
+    boxes.push_back(
+        {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)});
   }
   std::optional<segment_clash> first;
   std::size_t count = 0;
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const box& x, const box& y) {
-    const auto c = classify_pair(g, x.info(), y.info());
+  for_each_box_pair(boxes, [&](std::size_t x, std::size_t y) {
+    const auto c = classify_pair(g, static_cast<index_t>(x), static_cast<index_t>(y));
     if (!c) return;
     ++count;
     if (!first || std::tie(c->s, c->t) < std::tie(first->s, first->t)) first = c;

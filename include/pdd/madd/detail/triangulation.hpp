@@ -18,10 +18,7 @@
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/madd/detail/region.hpp>
-
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Triangulation_face_base_with_info_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
 
 #include <array>
 #include <cmath>
@@ -63,13 +60,10 @@ struct madd_triangulation {
   std::size_t encroachment_splits = 0;
 };
 
-/// CGAL types of the MADD triangulation (exact predicates, inexact constructions).
-using madd_cdt_vb = CGAL::Triangulation_vertex_base_with_info_2<std::uint32_t, epick>;
-using madd_cdt_fb = CGAL::Constrained_triangulation_face_base_2<
-    epick, CGAL::Triangulation_face_base_with_info_2<int, epick>>;
-using madd_cdt = CGAL::Constrained_Delaunay_triangulation_2<
-    epick, CGAL::Triangulation_data_structure_2<madd_cdt_vb, madd_cdt_fb>,
-    CGAL::Exact_predicates_tag>;
+/// The MADD triangulation (vertex info: the Z vertex; face info: the nesting level, then the
+/// face's index in madd_triangulation::faces), built with constraint_crossing::
+/// split_at_vertices.
+using madd_cdt = constrained_delaunay_2<std::uint32_t, int>;
 
 /// Parameter (canonical orientation of the region edge) of Z vertex w seen from the edge
 /// that starts at or contains Z vertex u (w == u or w == z[u].next).
@@ -379,7 +373,7 @@ inline madd_triangulation triangulate_region(const madd_region& r, double h,
                                              int max_encroachment_depth) {
   madd_triangulation tr;
   build_z(r, h, tr.z);
-  madd_cdt cdt;
+  madd_cdt cdt(constraint_crossing::split_at_vertices);
   std::vector<madd_cdt::Vertex_handle> handle;
   std::vector<std::uint32_t> twin;
   insert_z(tr.z, cdt, handle, twin);

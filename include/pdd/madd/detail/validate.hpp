@@ -4,15 +4,16 @@
 /// segments' coverage and of the interface curves.
 #pragma once
 
+#include <pdd/core/bbox.hpp>
 #include <pdd/core/decomposition.hpp>
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/geometry/box_pairs.hpp>
 #include <pdd/geometry/domain_faces.hpp>
 #include <pdd/madd/decomposition_report.hpp>
 #include <pdd/madd/detail/region.hpp>
 
 #include <CGAL/Polygon_2_algorithms.h>
-#include <CGAL/box_intersection_d.h>
 
 #include <algorithm>
 #include <cmath>
@@ -47,24 +48,22 @@ inline bool loop_edges_clash(const decomposition& d, index_t a, index_t b, index
 /// share an endpoint, and consecutive edges may not fold back onto each other.
 inline void check_subdomain_simple(const decomposition& d, std::size_t s,
                                    std::vector<std::string>& problems) {
-  using box = CGAL::Box_intersection_d::Box_with_info_d<double, 2, std::size_t>;
   const subdomain& sd = d.subdomains[s];
   std::vector<std::pair<index_t, index_t>> edges;
   for (const auto& l : sd.loops)
     for (std::size_t i = 0; i < l.size(); ++i)
       edges.emplace_back(l[i], l[(i + 1) % l.size()]);
-  std::vector<box> boxes;
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    const point a = d.vertices[edges[e].first], b = d.vertices[edges[e].second];
-    double lo[2] = {std::min(a.x, b.x), std::min(a.y, b.y)};
-    double hi[2] = {std::max(a.x, b.x), std::max(a.y, b.y)};
-    boxes.emplace_back(lo, hi, e);
+  std::vector<bbox> boxes;
+  for (const auto& [u, w] : edges) {
+    const point a = d.vertices[u], b = d.vertices[w];
+    boxes.push_back(
+        {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)});
   }
   std::size_t bad = 0;
   std::string first;
-  CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), [&](const box& x, const box& y) {
-    const auto [a, b] = edges[x.info()];
-    const auto [c, e] = edges[y.info()];
+  for_each_box_pair(boxes, [&](std::size_t x, std::size_t y) {
+    const auto [a, b] = edges[x];
+    const auto [c, e] = edges[y];
     if (loop_edges_clash(d, a, b, c, e) && bad++ == 0)
       first = "edges (" + std::to_string(a) + ", " + std::to_string(b) + ") and (" +
               std::to_string(c) + ", " + std::to_string(e) + ")";

@@ -8,11 +8,7 @@
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/errors.hpp>
-
-#include <CGAL/Delaunay_triangulation_2.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_face_base_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
 
 #include <algorithm>
 #include <array>
@@ -56,10 +52,9 @@ struct point_set_delaunay {
   std::vector<index_t> hull;
 };
 
-using delaunay_vertex = CGAL::Triangulation_vertex_base_with_info_2<index_t, epick>;
-using delaunay_tds =
-    CGAL::Triangulation_data_structure_2<delaunay_vertex, CGAL::Triangulation_face_base_2<epick>>;
-using delaunay_2 = CGAL::Delaunay_triangulation_2<epick, delaunay_tds>;
+/// The Delaunay triangulation of a vertex set: a constrained one without constraints (vertex
+/// info: the input id).
+using delaunay_2 = constrained_delaunay_2<index_t>;
 
 /// The hull of a 2-dimensional triangulation: the edges of its infinite faces, the finite
 /// side on the left, chained from the smallest id.

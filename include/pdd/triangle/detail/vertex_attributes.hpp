@@ -14,11 +14,7 @@
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/triangle/detail/point_set.hpp>
-
-#include <CGAL/Constrained_Delaunay_triangulation_2.h>
-#include <CGAL/Constrained_triangulation_face_base_2.h>
-#include <CGAL/Triangulation_data_structure_2.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
 
 #include <algorithm>
 #include <array>
@@ -62,11 +58,7 @@ public:
   std::size_t count() const noexcept { return count_; }
 
 private:
-  using vertex_base = CGAL::Triangulation_vertex_base_with_info_2<index_t, epick>;
-  using face_base = CGAL::Constrained_triangulation_face_base_2<epick>;
-  using cdt = CGAL::Constrained_Delaunay_triangulation_2<
-      epick, CGAL::Triangulation_data_structure_2<vertex_base, face_base>,
-      CGAL::Exact_predicates_tag>;
+  using cdt = constrained_delaunay_2<index_t>;
 
   /// Writes the interpolated attributes at p to out (count_ values): barycentric in the
   /// triangle holding p, linear on an edge, the vertex's own at a vertex.
@@ -125,7 +117,7 @@ private:
   std::size_t count_;
   std::size_t inputs_;
   std::vector<double> values_;
-  cdt cdt_;
+  cdt cdt_{constraint_crossing::split_at_vertices};
 };
 
 } // namespace pdd::triangle::detail
