@@ -1,6 +1,7 @@
-// Example 1: mesh a polygon with holes with the default CGAL kernel and check the result.
+// Example 1: mesh a polygon with holes with the default kernel (CGAL's; the native one in a
+// PDD_PERMISSIVE build) and check the result.
 #include <pdd/geometry/validate.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 
@@ -18,7 +19,7 @@ int main() {
 
   const pdd::mesh_criteria criteria{.min_angle_deg = 25.0, .max_area = 0.01};
   const pdd::mesher_result result =
-      pdd::cgal::mesher{}.mesh(domain, criteria, pdd::uniform_sizing{criteria.max_area});
+      pdd::default_mesher{}.mesh(domain, criteria, pdd::uniform_sizing{criteria.max_area});
 
   const pdd::mesh_statistics st = pdd::compute_statistics(result.mesh);
   const pdd::verification_report report =

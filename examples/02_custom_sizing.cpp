@@ -1,10 +1,10 @@
 // Example 2: a custom SizingField: small triangles near a point, large ones far away.
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/geometry/model_domains.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 // the kernel compiled for a field of our own (libpdd holds it for pdd::any_sizing and
 // pdd::uniform_sizing only)
-#include <pdd/kernels/cgal/mesher_templates.hpp>
+#include <pdd/kernels/default_mesher_templates.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 
@@ -28,7 +28,7 @@ int main() {
   const pdd::pslg pipe = pdd::pipe_domain();
   const point_source sizing{{0.75, 0.0}, 2e-5, 2e-3};
   const pdd::mesh_criteria criteria; // 20.7 degrees
-  const auto result = pdd::cgal::mesher{}.mesh(pipe, criteria, sizing);
+  const auto result = pdd::default_mesher{}.mesh(pipe, criteria, sizing);
   const auto st = pdd::compute_statistics(result.mesh, sizing);
   const auto report =
       pdd::verify(result.mesh, pipe, pdd::verify_options{.criteria = criteria}, sizing);

@@ -1,9 +1,9 @@
-// Example 3: a custom DelaunayMesher that wraps the default CGAL kernel and counts its calls.
+// Example 3: a custom DelaunayMesher that wraps the default kernel and counts its calls.
 // Any type with `mesh(pslg, mesh_criteria, SizingField) -> mesher_result` and the semantics in
 // <pdd/concepts/delaunay_mesher.hpp> plugs into pdd's pipelines in place of the default kernel.
 #include <pdd/concepts/delaunay_mesher.hpp>
 #include <pdd/geometry/model_domains.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 #include <pdd/sizing/uniform.hpp>
 
 #include <atomic>
@@ -20,7 +20,7 @@ public:
   long calls() const { return calls_->load(); }
 
 private:
-  pdd::cgal::mesher inner_;
+  pdd::default_mesher inner_;
   std::shared_ptr<std::atomic<long>> calls_ = std::make_shared<std::atomic<long>>(0);
 };
 static_assert(pdd::DelaunayMesher<counting_mesher>);

@@ -8,9 +8,13 @@
 #include <pdd/errors.hpp>
 #include <pdd/generate.hpp>
 #include <pdd/geometry/validate.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 // the kernel with python::grid_sizing (libpdd holds it for pdd::any_sizing and uniform_sizing)
+#ifdef PDD_PERMISSIVE
+#include <pdd/kernels/native/mesher_templates.hpp>
+#else
 #include <pdd/kernels/cgal/mesher_templates.hpp>
+#endif
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/verify.hpp>
 #include <pdd/shielding/apply_shields.hpp>
@@ -33,6 +37,14 @@ using namespace pybind11::literals;
 
 namespace pdd::python {
 namespace {
+
+/// The kernel pdd.mesh meshes with: CGAL's Mesh_2, or the native kernel in a PDD_PERMISSIVE
+/// build (no GPL code).
+#ifdef PDD_PERMISSIVE
+const std::string kernel_name = "native";
+#else
+const std::string kernel_name = "cgal";
+#endif
 
 /// The triangle package's input dict as a pslg; unknown and unsupported keys are refused.
 pslg pslg_from_dict(const py::dict& tri) {
@@ -245,18 +257,18 @@ triangle_mesh mesh_with_sizing(const pslg& g, const mesh_criteria& c, const S& s
   if (!has_closed_loops(g)) {
     pslg whole = g;
     whole.rule = domain_rule::triangle;
-    mesher_result r = cgal::mesher{}.mesh(whole, c, sizing);
+    mesher_result r = default_mesher{}.mesh(whole, c, sizing);
     st.general_domain = true;
     st.triangles = r.mesh.triangles.size();
     return std::move(r.mesh);
   }
   if (!c.within_ruppert_bound()) {
-    mesher_result r = cgal::mesher{}.mesh(g, c, sizing);
+    mesher_result r = default_mesher{}.mesh(g, c, sizing);
     st.triangles = r.mesh.triangles.size();
     return std::move(r.mesh);
   }
   const shielded_domain sd = shield(g, c.max_area);
-  mesher_result r = cgal::mesher{}.mesh(sd.domain, c, sizing);
+  mesher_result r = default_mesher{}.mesh(sd.domain, c, sizing);
   if (add_shield_triangles(r, sd.domain, sd.triangles, 0) != 0)
     throw meshing_error(-1, "the kernel split a shield edge");
   st.shielded_triangles = sd.triangles.size();
@@ -298,8 +310,9 @@ py::dict mesh(const py::handle& vertices, const py::handle& segments, const py::
               const py::handle& sizing_bounds, std::size_t subdomains, unsigned threads,
               const std::string& kernel, const py::handle& vertex_markers,
               const py::handle& segment_markers) {
-  if (kernel != "cgal")
-    throw bad_argument("kernel '" + kernel + "' is not available (pdd has: 'cgal')");
+  if (kernel != kernel_name)
+    throw bad_argument("kernel '" + kernel + "' is not available (this build of pdd has: '" +
+                       kernel_name + "')");
   const pslg g = pslg_from_arrays(vertices, segments, holes, vertex_markers, segment_markers);
   const generate_options o = options_from(min_angle, max_area, subdomains, threads);
   const bool callable = !sizing.is_none() && PyCallable_Check(sizing.ptr());
@@ -394,8 +407,8 @@ subdomains (0: automatic).)");
   def_triangle_functions(m);
   m.def("mesh", &mesh, "vertices"_a, "segments"_a, "holes"_a = py::none(), "min_angle"_a = 20.7,
         "max_area"_a = py::none(), "sizing"_a = py::none(), "sizing_bounds"_a = py::none(),
-        "subdomains"_a = 0, "threads"_a = 0, "kernel"_a = "cgal", "vertex_markers"_a = py::none(),
-        "segment_markers"_a = py::none(),
+        "subdomains"_a = 0, "threads"_a = 0, "kernel"_a = kernel_name,
+        "vertex_markers"_a = py::none(), "segment_markers"_a = py::none(),
         R"(Meshes the domain enclosed by closed segment loops with guaranteed quality.
 
 vertices (n, 2), segments (m, 2) vertex indices, holes (h, 2) one point in each hole.

@@ -28,6 +28,13 @@
 
 namespace pdd::drivers {
 
+/// The --kernel default: cgal, or native in a PDD_PERMISSIVE build (no CGAL Mesh_2).
+#ifdef PDD_PERMISSIVE
+inline constexpr const char* default_kernel_name = "native";
+#else
+inline constexpr const char* default_kernel_name = "cgal";
+#endif
+
 /// The values of the shared options.
 struct mesh_options {
   std::string input, per_subdomain_dir, stats;
@@ -47,8 +54,9 @@ struct mesh_options {
   /// mesh.pddi)
   pdd::piece_format format = pdd::piece_format::vtu;
   bool no_disk_check = false; ///< --no-disk-check
-  /// --kernel: cgal (pdd::cgal::mesher, the default) or native (pdd::native::mesher)
-  std::string kernel = "cgal";
+  /// --kernel: cgal (pdd::cgal::mesher, the default) or native (pdd::native::mesher; the
+  /// default and the only one in a PDD_PERMISSIVE build)
+  std::string kernel = default_kernel_name;
   std::optional<std::uintmax_t> assume_free_bytes; ///< --assume-free-bytes (for tests)
 };
 
@@ -109,10 +117,24 @@ inline void add_method_options(CLI::App& app, mesh_options& o) {
                  "geometric path: mesh with the user's area bound (user, default) or with "
                  "Algorithm 8.3's F (8.3)")
       ->check(CLI::IsMember({"user", "8.3"}));
+#ifdef PDD_PERMISSIVE
+  app.add_option("--kernel", o.kernel,
+                 "sequential Delaunay refinement kernel: native (pdd's triangle-array mesher; "
+                 "this build has no other)")
+      ->check(CLI::Validator(
+          [](const std::string& k) {
+            return k == "native" ? std::string()
+                                 : "the " + k +
+                                       " kernel is not in this build of pdd (built with "
+                                       "PDD_PERMISSIVE: no GPL code); use --kernel native";
+          },
+          "native"));
+#else
   app.add_option("--kernel", o.kernel,
                  "sequential Delaunay refinement kernel: cgal (default, CGAL's Mesh_2) or native "
                  "(pdd's triangle-array mesher)")
       ->check(CLI::IsMember({"cgal", "native"}));
+#endif
 }
 
 /// True when a region of the domain carries a nonzero attribute (Triangle's -A): pdd-mesh

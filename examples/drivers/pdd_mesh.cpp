@@ -503,10 +503,14 @@ int run(const cli_options& o) {
   bar.stage("reading input");
   read_input(o, r);
   bar.stage("decomposing and meshing");
+#ifdef PDD_PERMISSIVE
+  mesh_with_kernel<pdd::native::mesher>(o, r, bar); // the only kernel (--kernel checks it)
+#else
   if (o.kernel == "native")
     mesh_with_kernel<pdd::native::mesher>(o, r, bar);
   else
     mesh_with_kernel<pdd::cgal::mesher>(o, r, bar);
+#endif
   bar.stage("writing");
   const auto t_write0 = std::chrono::steady_clock::now();
   write_outputs(o, r);

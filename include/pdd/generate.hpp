@@ -3,11 +3,11 @@
 /// decompose (MADD), decouple (Theorem 15, Lemma 9), mesh every subdomain in parallel and merge
 /// (or stream to a MeshSink).
 ///
-/// This header is light: libpdd holds pdd::generate compiled for pdd::cgal::mesher and
-/// pdd::native::mesher with the default partitioner and the TBB executor, for any sink. A
-/// program that calls it with a kernel, partitioner or executor of its own also includes
-/// <pdd/pipeline/generate_templates.hpp> (in a header-only build, PDD_HEADER_ONLY, this header
-/// includes it).
+/// This header is light: libpdd holds pdd::generate compiled for pdd::cgal::mesher (not in a
+/// PDD_PERMISSIVE build) and pdd::native::mesher with the default partitioner and the TBB executor,
+/// for any sink. A program that calls it with a kernel, partitioner or executor of its own also
+/// includes <pdd/pipeline/generate_templates.hpp> (in a header-only build, PDD_HEADER_ONLY, this
+/// header includes it).
 #pragma once
 
 #include <pdd/concepts/delaunay_mesher.hpp>
@@ -15,7 +15,7 @@
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/concepts/mesh_sink.hpp>
 #include <pdd/core/pslg.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 #include <pdd/mesh/mesh_sink_ref.hpp>
 #include <pdd/parallel/tbb_executor.hpp>
 #include <pdd/partition/default_partitioner.hpp>
@@ -31,7 +31,8 @@ namespace pdd {
 /// options.threads threads, the meshes merged in memory (merge_sink). The result is bitwise
 /// the same for every thread count; with options.threads = T > 0 no part of the call (MADD, the
 /// path, the kernel, the merge) runs on more than T threads (pdd::with_threads).
-/// \tparam M a DelaunayMesher (default pdd::cgal::mesher). \tparam P a GraphPartitioner
+/// \tparam M a DelaunayMesher (default pdd::default_mesher: CGAL's Mesh_2, or the native
+/// kernel in a PDD_PERMISSIVE build). \tparam P a GraphPartitioner
 /// (default METIS when found). \tparam E an Executor (default pdd::tbb_executor).
 /// \pre `domain` is valid (pdd::validate). Input angles < 60 deg are shielded (dissertation
 /// 8.1, pdd::shield / pdd::shield_decomposition; with a sizing field and N > 1 per subdomain
@@ -42,7 +43,7 @@ namespace pdd {
 /// options.madd.min_separator_angle_deg outside [60, 90)), pdd::meshing_error (kernel, with
 /// the subdomain id), pdd::decoupling_error (invariance repairs exhausted).
 /// Complexity: the kernel on every subdomain plus O(mesh size) merging.
-template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitioner,
+template <DelaunayMesher M = default_mesher, GraphPartitioner P = default_partitioner,
           Executor E = tbb_executor>
 generate_result generate(const pslg& domain, const generate_options& options = {},
                          const M& mesher = {}, const P& partitioner = {}) {
@@ -53,7 +54,7 @@ generate_result generate(const pslg& domain, const generate_options& options = {
 /// vtu_directory_sink writes one file per subdomain and keeps nothing in memory, so meshes
 /// larger than memory can be made). Returns the statistics.
 /// \tparam S a MeshSink. \throws as generate().
-template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitioner,
+template <DelaunayMesher M = default_mesher, GraphPartitioner P = default_partitioner,
           Executor E = tbb_executor, MeshSink S>
 generate_statistics generate(const pslg& domain, const generate_options& options, S& sink,
                              const M& mesher = {}, const P& partitioner = {}) {

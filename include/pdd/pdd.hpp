@@ -41,8 +41,11 @@
 #include <pdd/geometry/validate.hpp>
 
 // level 3: sizing, partition, kernels, parallel
+#ifndef PDD_PERMISSIVE // CGAL's Mesh_2 (GPL)
 #include <pdd/kernels/cgal/criteria.hpp>
 #include <pdd/kernels/cgal/mesher.hpp>
+#endif
+#include <pdd/kernels/default_mesher.hpp>
 #include <pdd/parallel/parallel_for.hpp>
 #include <pdd/parallel/schedule_order.hpp>
 #include <pdd/parallel/sequential_executor.hpp>

@@ -15,7 +15,7 @@
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/decoupling/decoupled_decomposition.hpp>
 #include <pdd/errors.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 #include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/mesh_sink_ref.hpp>
@@ -53,7 +53,7 @@ namespace pdd {
 /// options.threads when it takes a thread count).
 /// Thread-safety: one pipeline object is used from one thread (its stages run in parallel
 /// inside).
-template <DelaunayMesher M = cgal::mesher, GraphPartitioner P = default_partitioner,
+template <DelaunayMesher M = default_mesher, GraphPartitioner P = default_partitioner,
           Executor E = tbb_executor>
 class pipeline {
 public:
@@ -266,7 +266,9 @@ generate_options pipeline<M, P, E>::checked(generate_options o) {
 // explicit instantiation declarations (not API): hidden from Doxygen
 /// \cond
 #ifndef PDD_HEADER_ONLY
+#ifndef PDD_PERMISSIVE
 extern template class pipeline<cgal::mesher, default_partitioner, tbb_executor>;
+#endif
 extern template class pipeline<native::mesher, default_partitioner, tbb_executor>;
 #endif
 /// \endcond

@@ -26,7 +26,9 @@
 #include <pdd/geometry/properties.hpp>
 #include <pdd/io/atomic_file.hpp>
 #include <pdd/io/poly.hpp>
+#ifndef PDD_PERMISSIVE
 #include <pdd/kernels/cgal/mesher.hpp>
+#endif
 #include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/quality.hpp>
 #include <pdd/mesh/quality_check.hpp>
@@ -325,8 +327,12 @@ int parse_and_run(int argc, char** argv, const mpi_job& job) {
     return rc == 0 ? ok : usage;
   }
   auto body = [&] {
+#ifdef PDD_PERMISSIVE
+    return run_with<pdd::native::mesher>(o, job); // the only kernel (--kernel checks it)
+#else
     return o.kernel == "native" ? run_with<pdd::native::mesher>(o, job)
                                 : run_with<pdd::cgal::mesher>(o, job);
+#endif
   };
   if (job.rank == 0) return run_reporting_errors("pdd-mesh-mpi", o.input, body);
   try {

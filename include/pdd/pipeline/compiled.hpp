@@ -1,18 +1,20 @@
 /// \file compiled.hpp
 /// What libpdd holds compiled: the stages of the chain (pipeline/chain.hpp) with the built-in
-/// kernels (pdd::cgal::mesher, pdd::native::mesher), the default partitioner and the TBB
-/// executor, every sink through pdd::mesh_sink_ref, and both kernels for pdd::any_sizing and
-/// pdd::uniform_sizing, and pdd::decompose (MADD) with the default partitioner. Outside a
-/// header-only build (PDD_HEADER_ONLY) they are declared here `extern template`, so a program that
-/// includes the stages' templates does not compile these again: it links them from libpdd. Other
-/// kernels, partitioners, executors and sizing fields are compiled where they are used, as in a
-/// header-only build.
+/// kernels (pdd::cgal::mesher, except in a PDD_PERMISSIVE build, and pdd::native::mesher), the
+/// default partitioner and the TBB executor, every sink through pdd::mesh_sink_ref, and both
+/// kernels for pdd::any_sizing and pdd::uniform_sizing, and pdd::decompose (MADD) with the default
+/// partitioner. Outside a header-only build (PDD_HEADER_ONLY) they are declared here `extern
+/// template`, so a program that includes the stages' templates does not compile these again: it
+/// links them from libpdd. Other kernels, partitioners, executors and sizing fields are compiled
+/// where they are used, as in a header-only build.
 #pragma once
 
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#ifndef PDD_PERMISSIVE
 #include <pdd/kernels/cgal/mesher_templates.hpp>
+#endif
 #include <pdd/kernels/native/mesher_templates.hpp>
 #include <pdd/madd/decompose.hpp>
 #include <pdd/mesh/mesh_sink_ref.hpp>
@@ -56,7 +58,9 @@
 /// \cond
 #ifndef PDD_HEADER_ONLY
 namespace pdd {
+#ifndef PDD_PERMISSIVE
 PDD_KERNEL_INSTANTIATIONS(extern template, cgal::mesher);
+#endif
 PDD_KERNEL_INSTANTIATIONS(extern template, native::mesher);
 PDD_STAGE_INSTANTIATIONS(extern template);
 } // namespace pdd

@@ -1,11 +1,14 @@
 /// \file generate_templates.hpp
 /// The definitions of the functions pdd::generate calls (pipeline/generate_entry.hpp), over
-/// pdd::pipeline. libpdd holds them for pdd::cgal::mesher and pdd::native::mesher with the
+/// pdd::pipeline. libpdd holds them for pdd::cgal::mesher (not in a PDD_PERMISSIVE build) and
+/// pdd::native::mesher with the
 /// default partitioner and the TBB executor (declared `extern template` here outside a
 /// header-only build); include this header to call pdd::generate with types of your own.
 #pragma once
 
+#ifndef PDD_PERMISSIVE
 #include <pdd/kernels/cgal/mesher.hpp>
+#endif
 #include <pdd/kernels/native/mesher.hpp>
 #include <pdd/mesh/merge.hpp>
 #include <pdd/mesh/mesh_sink_ref.hpp>
@@ -65,7 +68,9 @@ generate_statistics generate_into(const pslg& domain, const generate_options& op
 /// \cond
 #ifndef PDD_HEADER_ONLY
 namespace pdd {
+#ifndef PDD_PERMISSIVE
 PDD_GENERATE_INSTANTIATIONS(extern template, cgal::mesher);
+#endif
 PDD_GENERATE_INSTANTIATIONS(extern template, native::mesher);
 } // namespace pdd
 #endif

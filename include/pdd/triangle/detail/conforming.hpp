@@ -11,6 +11,12 @@
 /// conforming Delaunay). S stops either one, step by step, after its number of points.
 #pragma once
 
+#include <pdd/triangle/detail/conforming_path.hpp>
+
+#ifdef PDD_PERMISSIVE
+#include <pdd/triangle/detail/conforming_refused.hpp>
+#else
+
 #include <pdd/core/kernel.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
@@ -268,12 +274,6 @@ inline triangle_mesh extract(cdt& tr, const pslg& g) {
 
 namespace pdd::triangle::detail {
 
-/// True when the switches take the conforming path: D, or S with q or a (S alone adds nothing:
-/// the constrained Delaunay triangulation has no Steiner point).
-inline bool conforming_path(const switches& sw) {
-  return sw.conforming || (sw.quality && sw.max_steiner >= 0);
-}
-
 /// Meshes a PSLG for switch D or S (see conforming.hpp's file comment) on one triangulation:
 /// without q or a, conforming Delaunay; with them, Delaunay refinement under q's angle, a's
 /// area and `sizing` (the regional or previous-mesh bounds), every segment Gabriel when it ends;
@@ -304,3 +304,5 @@ inline triangulation conforming_mesh(pslg domain, const switches& sw, const any_
 }
 
 } // namespace pdd::triangle::detail
+
+#endif // PDD_PERMISSIVE
