@@ -145,6 +145,7 @@ TEST(PddMesh, ExitCodesAndMessages) {
   r = run(PDD_MESH_EXE, bow);
   EXPECT_EQ(r.code, 1);
   EXPECT_NE(r.output.find("segment"), std::string::npos) << r.output;
+#ifndef PDD_PERMISSIVE // the CGAL kernel's message (a permissive build has the native kernel)
   // valid input beyond the kernel's double precision (two segments at about 2e-16 rad): exit 5,
   // reported as an error of the input, not an internal error
   const fs::path sub_degree = pdd::test::temp_path("unresolvable_angle.poly");
@@ -154,6 +155,7 @@ TEST(PddMesh, ExitCodesAndMessages) {
   EXPECT_NE(r.output.find("pdd-mesh: error: "), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("internal error"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("cannot be split"), std::string::npos) << r.output;
+#endif
 }
 
 TEST(PddMesh, ShieldsSmallInputAngles) {

@@ -41,7 +41,11 @@ struct mesh_case {
   fs::path input;
   std::string max_area;
   int subdomains;
+#ifdef PDD_PERMISSIVE
+  std::string kernel = "native"; // the only kernel of a permissive build
+#else
   std::string kernel = "cgal";
+#endif
 };
 
 std::string case_options(const mesh_case& c) {

@@ -8,7 +8,7 @@
 // unresolvable_input_error; 1 when the statistics disagree or are inconsistent. Run by
 // tests/mpi/mpi_test.cpp under mpiexec.
 #include <pdd/io/poly.hpp>
-#include <pdd/kernels/cgal/mesher.hpp>
+#include <pdd/kernels/default_mesher.hpp>
 #include <pdd/mpi/collectively.hpp>
 #include <pdd/mpi/mesh_subdomains.hpp>
 #include <pdd/mpi/vtu_directory_sink.hpp>
@@ -33,7 +33,7 @@ struct throwing_mesher {
       if (unresolvable) throw pdd::unresolvable_input_error(-1, "injected input limit");
       throw std::runtime_error("injected failure");
     }
-    return pdd::cgal::mesher{}.mesh(d, c, s);
+    return pdd::default_mesher{}.mesh(d, c, s);
   }
 };
 static_assert(pdd::DelaunayMesher<throwing_mesher>);

@@ -5,10 +5,9 @@
 
 #include <pdd/concepts/graph_partitioner.hpp>
 #include <pdd/core/kernel.hpp>
+#include <pdd/triangulation/constrained_delaunay_2.hpp>
 
 #include <boost/graph/connected_components.hpp>
-
-#include <CGAL/Delaunay_triangulation_2.h>
 
 #include <algorithm>
 #include <array>
@@ -154,7 +153,7 @@ inline partition_graph random_holey_grid(std::uint64_t seed) {
 inline partition_graph madd_like_graph(std::size_t n, double contract_fraction,
                                        std::uint64_t seed) {
   using K = pdd::epick;
-  using DT = CGAL::Delaunay_triangulation_2<K>;
+  using DT = pdd::constrained_delaunay_2<>; // no constraint: the Delaunay triangulation
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   DT dt;
@@ -196,7 +195,8 @@ inline partition_graph madd_like_graph(std::size_t n, double contract_fraction,
     if (dt.is_infinite(f) || dt.is_infinite(h)) continue;
     const std::size_t a = id.at(face_key(f)), b = id.at(face_key(h));
     all.push_back({std::min(a, b), std::max(a, b),
-                   std::sqrt(CGAL::to_double(dt.segment(*e).squared_length()))});
+                   std::sqrt(CGAL::squared_distance(f->vertex(DT::ccw(e->second))->point(),
+                                                    f->vertex(DT::cw(e->second))->point()))});
   }
   std::sort(all.begin(), all.end());
   std::vector<dual_edge> edges;

@@ -105,7 +105,13 @@ TEST(RegionalSizing, RegionOutsideTheDomainOrOnItsBoundaryIsNamed) {
 }
 
 // Triangle 1.6: `triangle -pq20.7Aa square.poly` with one region (0.5, 0.5) of area 1e-4
-// gives 15602 triangles; CGAL's kernel makes 1.5-2% fewer at the same bound (DESIGN.md).
+// gives 15602 triangles; CGAL's kernel makes 1.5-2% fewer at the same bound (DESIGN.md), the
+// native kernel (a permissive build's default) about 1% more.
+#ifdef PDD_PERMISSIVE
+constexpr double whole_domain_ratio_bound = 1.02;
+#else
+constexpr double whole_domain_ratio_bound = 1.0;
+#endif
 TEST(RegionalSizing, SquareMatchesTriangleCount) {
   pdd::pslg g = unit_square();
   g.regions.push_back({{0.5, 0.5}, 0.0, 1e-4});
@@ -117,7 +123,8 @@ TEST(RegionalSizing, SquareMatchesTriangleCount) {
     const pdd::generate_result r = pdd::generate(g, o);
     const double ratio = static_cast<double>(r.mesh.triangles.size()) / 15602.0;
     EXPECT_GT(ratio, 0.96) << "N " << n << ": " << r.mesh.triangles.size();
-    EXPECT_LT(ratio, n == 1 ? 1.0 : 1.06) << "N " << n << ": " << r.mesh.triangles.size();
+    EXPECT_LT(ratio, n == 1 ? whole_domain_ratio_bound : 1.06)
+        << "N " << n << ": " << r.mesh.triangles.size();
     expect_graded_verified(r.mesh, g, o, "square N " + std::to_string(n));
   }
 }
@@ -136,7 +143,7 @@ TEST(RegionalSizing, LetterAMatchesTriangleCount) {
   const pdd::generate_result r = pdd::generate(g, o);
   const double ratio = static_cast<double>(r.mesh.triangles.size()) / 13070.0;
   EXPECT_GT(ratio, 0.96) << r.mesh.triangles.size();
-  EXPECT_LT(ratio, 1.0) << r.mesh.triangles.size();
+  EXPECT_LT(ratio, whole_domain_ratio_bound) << r.mesh.triangles.size();
   expect_graded_verified(r.mesh, g, o, "A");
 }
 

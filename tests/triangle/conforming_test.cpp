@@ -21,6 +21,22 @@
 namespace conforming_test {
 namespace tri = pdd::triangle;
 
+#ifdef PDD_PERMISSIVE
+// D and S mesh on CGAL's Mesh_2, which a permissive build leaves out: refused, named.
+TEST(Conforming, RefusedInAPermissiveBuild) {
+  pdd::pslg g;
+  g.add_loop(std::array<pdd::point, 3>{{{0, 0}, {1, 0}, {0, 1}}}, 1);
+  for (const char* sw : {"pD", "pq30S10"}) {
+    try {
+      tri::triangulate(g, tri::parse_switches(sw));
+      ADD_FAILURE() << sw << " was not refused";
+    } catch (const tri::switch_error& e) {
+      EXPECT_NE(std::string(e.what()).find("PDD_PERMISSIVE"), std::string::npos) << e.what();
+    }
+  }
+}
+#else
+
 namespace {
 
 /// Triangles with a vertex of the mesh strictly inside their circumcircle (exact predicate;
@@ -198,5 +214,7 @@ TEST(Conforming, ARefinementThatDoesNotEndStopsWithALimitError) {
   const auto capped = tri::triangulate(g, tri::parse_switches("pqDS50"));
   EXPECT_EQ(capped.mesh.vertices.size(), 3u + 50u);
 }
+
+#endif // PDD_PERMISSIVE
 
 } // namespace conforming_test
