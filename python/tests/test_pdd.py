@@ -114,8 +114,8 @@ def test_bad_input_raises_value_error_with_pdd_message():
         pdd.mesh(np.zeros((4, 3)), square()["segments"])
     with pytest.raises(ValueError, match="holes must have shape"):
         pdd.triangulate(dict(square(), holes=np.zeros((2, 3))), "p")
-    with pytest.raises(ValueError, match="kernel 'native'"):
-        pdd.mesh(**square(), kernel="native")
+    with pytest.raises(ValueError, match="kernel 'bogus' is not available"):
+        pdd.mesh(**square(), kernel="bogus")
 
 
 def test_mesh_round_trip_and_statistics():
