@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pdd/core/bbox.hpp>
+#include <pdd/core/point.hpp>
 
 #ifndef BOOST_ALLOW_DEPRECATED_HEADERS
 #define BOOST_ALLOW_DEPRECATED_HEADERS // a deprecated Boost header rtree.hpp includes
@@ -19,11 +20,17 @@
 #endif
 #include <boost/iterator/function_output_iterator.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <utility>
 #include <vector>
 
 namespace pdd {
+
+/// The bounding box of the segment [a, b].
+inline bbox segment_box(const point& a, const point& b) noexcept {
+  return {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)};
+}
 
 /// Calls pair(i, j), i < j, once for every two of `boxes` that intersect (closed: boxes that
 /// touch count). The order of the calls is deterministic (a function of the boxes alone).

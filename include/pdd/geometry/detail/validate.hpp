@@ -133,11 +133,8 @@ inline std::optional<segment_clash> classify_pair(const pslg& g, index_t s, inde
 inline void check_intersections(const pslg& g) {
   std::vector<bbox> boxes;
   boxes.reserve(g.segments.size());
-  for (const segment& sg : g.segments) {
-    const point a = g.vertices[sg.a], b = g.vertices[sg.b];
-    boxes.push_back(
-        {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)});
-  }
+  for (const segment& sg : g.segments)
+    boxes.push_back(segment_box(g.vertices[sg.a], g.vertices[sg.b]));
   std::optional<segment_clash> first;
   std::size_t count = 0;
   for_each_box_pair(boxes, [&](std::size_t x, std::size_t y) {

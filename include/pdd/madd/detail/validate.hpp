@@ -54,11 +54,8 @@ inline void check_subdomain_simple(const decomposition& d, std::size_t s,
     for (std::size_t i = 0; i < l.size(); ++i)
       edges.emplace_back(l[i], l[(i + 1) % l.size()]);
   std::vector<bbox> boxes;
-  for (const auto& [u, w] : edges) {
-    const point a = d.vertices[u], b = d.vertices[w];
-    boxes.push_back(
-        {std::min(a.x, b.x), std::min(a.y, b.y), std::max(a.x, b.x), std::max(a.y, b.y)});
-  }
+  for (const auto& [u, w] : edges)
+    boxes.push_back(segment_box(d.vertices[u], d.vertices[w]));
   std::size_t bad = 0;
   std::string first;
   for_each_box_pair(boxes, [&](std::size_t x, std::size_t y) {
