@@ -208,7 +208,8 @@ py::dict statistics_dict(const generate_statistics& s, const mesh_statistics& q)
 
 /// pdd.verify(tri, mesh, ...): pdd::verify with its default options (see the docstring below).
 py::dict verify(const py::dict& tri, const py::dict& mesh, double min_angle,
-                const std::optional<double> max_area, std::size_t max_reported) {
+                const std::optional<double> max_area, std::size_t max_reported,
+                const std::string& encroachment) {
   const pslg g = pslg_from_dict(tri);
   if (!mesh.contains("vertices") || !mesh.contains("triangles"))
     throw bad_argument("the mesh dict needs 'vertices' and 'triangles'");
@@ -228,6 +229,11 @@ py::dict verify(const py::dict& tri, const py::dict& mesh, double min_angle,
   verify_options o;
   o.criteria.min_angle_deg = min_angle;
   if (max_area) o.criteria.max_area = *max_area;
+  if (encroachment == "diametral_lens")
+    o.criteria.encroachment = segment_encroachment::diametral_lens;
+  else if (encroachment != "diametral_circle")
+    throw bad_argument("encroachment must be 'diametral_circle' or 'diametral_lens', got '" +
+                       encroachment + "'");
   o.max_reported = max_reported;
   verification_report r;
   {
@@ -420,7 +426,7 @@ every thread count. Returns a dict of numpy arrays (vertices, triangles, segment
 segment_markers, vertex_markers, triangle_markers = subdomain ids) and 'statistics'.
 Bad input raises ValueError with pdd's message; the GIL is released while meshing.)");
   m.def("verify", &verify, "tri"_a, "mesh"_a, py::kw_only(), "min_angle"_a = 20.7,
-        "max_area"_a = py::none(), "max_reported"_a = 20,
+        "max_area"_a = py::none(), "max_reported"_a = 20, "encroachment"_a = "diametral_circle",
         R"(Verifies a mesh of a PSLG with pdd::verify's defaults: the one verdict of `pdd-mesh
 --verify`, pdd-verify and the C++ library.
 
@@ -430,7 +436,10 @@ Checks exact local Delaunay of every interior edge, orientation, every input seg
 of mesh edges, the domain's area covered, every triangle's area <= max_area, and the angle
 bound min_angle on every triangle but those pdd's rule exempts (shielded corners of input angles
 < 60 deg; on a domain that is not closed loops, the cluster triangles at small angles between
-segments). Returns a dict: ok, the count of each kind of violation, area_domain, area_mesh,
-area_ok and messages (the first max_reported, with ids and coordinates).)");
+segments). encroachment: 'diametral_circle' (default, as pdd.mesh meshes: every interior edge
+Delaunay) or 'diametral_lens' for a mesh of triangulate without D, which refines under
+Triangle's diametral lenses: constrained Delaunay, so edges on input segments are not checked
+for the Delaunay property. Returns a dict: ok, the count of each kind of violation,
+area_domain, area_mesh, area_ok and messages (the first max_reported, with ids and coordinates).)");
   m.attr("supported_switches") = std::string(pdd::triangle::supported_switches);
 }

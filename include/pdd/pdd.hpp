@@ -16,6 +16,7 @@
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/segment_markers.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangle_mesh.hpp>
 #include <pdd/errors.hpp>

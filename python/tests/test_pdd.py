@@ -63,8 +63,9 @@ def test_triangulate_like_the_triangle_package():
     assert min_angles(v, t).min() >= 30.0
     assert np.array_equal(out["holes"], key["holes"])
     assert "triangle_attributes" not in out and "neighbors" not in out
-    # within 3% of Triangle 1.6's 797 triangles for the same switches
-    assert abs(len(t) - 797) < 0.03 * 797
+    # within 6% of Triangle 1.6's 797 triangles for the same switches (761, both refining under
+    # diametral lenses; issue 35 asks for 15 %)
+    assert abs(len(t) - 797) < 0.06 * 797
 
 
 def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
@@ -385,6 +386,7 @@ def test_verify_is_the_library_verdict():
     assert not rep["area_ok"] and rep["nonmanifold_edges"] >= 1
     # the same verdict through triangulate's dicts
     t = pdd.triangulate(dict(vertices=v, segments=s), "pq20.7a0.002")
-    assert pdd.verify(dict(vertices=v, segments=s), t, max_area=0.002)["ok"]
+    assert pdd.verify(dict(vertices=v, segments=s), t, max_area=0.002,
+                      encroachment="diametral_lens")["ok"]
     with pytest.raises(ValueError, match="mesh triangles"):
         pdd.verify(tri, dict(vertices=r["vertices"], triangles=np.zeros((3, 2))))

@@ -61,13 +61,17 @@ pdd::generate_options options(double max_area, unsigned threads = 1) {
 }
 
 /// Expects m to be a verified mesh of d (rule triangle) under 20.7 deg and max_area, with the
-/// sizing field for the area bound; returns the number of cluster-exempt triangles.
+/// sizing field for the area bound, refined under `rule` (pdd-triangle's meshes without D: the
+/// lens); returns the number of cluster-exempt triangles.
 template <class S = pdd::uniform_sizing>
-std::size_t expect_verified(const pdd::triangle_mesh& m, const pslg& d, double max_area,
-                            const std::string& at, const S& sizing = {}) {
+std::size_t
+expect_verified(const pdd::triangle_mesh& m, const pslg& d, double max_area, const std::string& at,
+                const S& sizing = {},
+                pdd::segment_encroachment rule = pdd::segment_encroachment::diametral_circle) {
   pdd::verify_options vo;
   vo.criteria.min_angle_deg = 20.7;
   vo.criteria.max_area = max_area;
+  vo.criteria.encroachment = rule;
   const pdd::verification_report rep = pdd::verify(m, d, vo, sizing); // pdd's exemptions
   const std::vector<char> exempt_flags = pdd::find_cluster_exempt_triangles(m, d, 20.7);
   EXPECT_TRUE(rep.ok()) << at << ": delaunay " << rep.delaunay_violations << " missing "
@@ -188,7 +192,8 @@ TEST(GeneralPslg, RegionalAttributesAndAreasPerFace) {
     for (std::size_t r = 1; r <= 5; ++r)
       EXPECT_GT(per_attribute[r], 10u) << r;
     const pdd::regional_sizing field(d);
-    expect_verified(t.mesh, d, std::numeric_limits<double>::infinity(), "regions", field);
+    expect_verified(t.mesh, d, std::numeric_limits<double>::infinity(), "regions", field,
+                    pdd::segment_encroachment::diametral_lens);
     // the finest layer (area 0.01) has more triangles per unit area than the coarsest (0.08)
     EXPECT_GT(per_attribute[1] / 10.0, 4.0 * per_attribute[5] / 20.0);
   }

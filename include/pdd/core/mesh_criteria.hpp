@@ -29,6 +29,20 @@ inline bool within_ruppert_bound(double min_angle_deg) {
   return !(ratio_for_min_angle(min_angle_deg) < std::numbers::sqrt2 * (1.0 - 1e-12));
 }
 
+/// When a vertex encroaches an input segment (splits it instead of being inserted).
+enum class segment_encroachment {
+  /// In the segment's closed diametral disk (Ruppert's rule): every edge of the result is
+  /// locally Delaunay, input segments included (a conforming Delaunay mesh; Triangle's -D).
+  diametral_circle,
+  /// In its diametral lens, the part of the disk seen from the segment at an angle above
+  /// 180 - 2 min_angle_deg (Chew's rule, Triangle's default for -q without -D): fewer segment
+  /// splits, so meshes of Triangle's size when no area bound is asked for; the result is
+  /// constrained Delaunay (an edge on an input segment may not be locally Delaunay, every other
+  /// edge is). Interface pieces and shield edges keep the circle, so that the union of the
+  /// subdomain meshes stays Delaunay across them.
+  diametral_lens,
+};
+
 /// Quality criteria for Delaunay refinement.
 struct mesh_criteria {
   /// Smallest angle allowed in a triangle, degrees (default: ratio sqrt 2, 20.7048 deg).
@@ -38,6 +52,9 @@ struct mesh_criteria {
   /// Uniform upper bound on triangle area; infinity means none. A SizingField given next to
   /// the criteria is combined with it (the smaller bound wins).
   double max_area = std::numeric_limits<double>::infinity();
+  /// Which vertices encroach an input segment (segment_encroachment); pdd::verify checks the
+  /// Delaunay property of the edges on input segments only under diametral_circle.
+  segment_encroachment encroachment = segment_encroachment::diametral_circle;
 
   /// The circumradius-to-shortest-edge bound B that min_angle_deg stands for.
   double ratio_bound() const { return ratio_for_min_angle(min_angle_deg); }
@@ -48,6 +65,10 @@ struct mesh_criteria {
     const double s = std::sin(min_angle_deg * std::numbers::pi / 180.0);
     return s * s;
   }
+  /// cos(2 min_angle_deg): a point p strictly inside the diametral disk of [a, b] is inside its
+  /// lens when (a - p).(b - p) < -lens_cosine() |a - p| |b - p| (the angle a p b exceeds
+  /// 180 - 2 min_angle_deg).
+  double lens_cosine() const { return std::cos(2.0 * min_angle_deg * std::numbers::pi / 180.0); }
 };
 
 } // namespace pdd

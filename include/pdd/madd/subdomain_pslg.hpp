@@ -5,22 +5,14 @@
 
 #include <pdd/core/decomposition.hpp>
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/segment_markers.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/errors.hpp>
 
 #include <cmath>
 #include <cstddef>
-#include <limits>
 #include <unordered_map>
 #include <vector>
-
-namespace pdd {
-
-/// The boundary marker of interface pieces in the subdomain inputs (and therefore in the
-/// segments of each subdomain mesh). Reserved: input segments may not carry it.
-inline constexpr int interface_marker = std::numeric_limits<int>::min();
-
-} // namespace pdd
 
 namespace pdd::detail {
 

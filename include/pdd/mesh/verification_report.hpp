@@ -14,7 +14,8 @@ namespace pdd {
 
 /// Options of verify().
 struct verify_options {
-  /// Quality bound (min_angle_deg, checked with 1e-9 degrees slack) and uniform area bound.
+  /// Quality bound (min_angle_deg, checked with 1e-9 degrees slack), uniform area bound, and
+  /// the encroachment rule the mesh was made under (which edges must be Delaunay).
   mesh_criteria criteria;
   /// Relative tolerance of |mesh area - domain area| / domain area.
   double area_tolerance = 1e-9;

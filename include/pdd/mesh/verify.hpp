@@ -20,7 +20,9 @@ namespace pdd {
 
 /// Verifies a mesh of the domain of d (dissertation sec. 1.1 requirements, DESIGN.md
 /// "Correctness invariants"): every interior edge is locally Delaunay (exact
-/// side_of_oriented_circle: the opposite apex is not strictly inside the circumcircle); every
+/// side_of_oriented_circle: the opposite apex is not strictly inside the circumcircle), or,
+/// when o.criteria.encroachment is segment_encroachment::diametral_lens, every interior edge
+/// not on an input segment (the mesh is constrained Delaunay, as Triangle's without -D); every
 /// triangle is counter-clockwise and non-degenerate (exact orientation); no two vertices
 /// coincide; every input segment is a union of mesh edges (a chain from the mesh vertex at
 /// one endpoint to the one at the other through vertices on the segment, see

@@ -126,7 +126,9 @@ inline verify_impl::edge_table check_piece(const triangle_mesh& m, const std::st
   verify_impl::edge_table table(m, valid);
   for (verify_impl::edge_record& e : table.edges())
     e.on_segment = e.count == 1; // piece boundary edges: checked across the interfaces
-  report_edges(m, table, check_edges(m, table), sink);
+  // A piece does not know which of its interior edges lie on input segments: every interior
+  // edge is checked, as for a mesh under the diametral circle (pdd-mesh's; see verify_pieces).
+  report_edges(m, table, check_edges(m, table), true, sink);
   r.area_mesh += mesh_area(m, flags);
   add_piece_violations(r, local, name + ": ", o.max_reported);
   return table;
@@ -283,7 +285,9 @@ private:
 /// side_of_oriented_circle), or lie on an input segment (verify_impl::on_segment_line); and
 /// the pieces' areas must sum to domain_area(input) within o.area_tolerance.
 /// Not checked (pieces carry no segments): that input segments inside one piece are unions of
-/// its edges.
+/// its edges. For the same reason every interior edge of a piece must be locally Delaunay,
+/// whatever o.criteria.encroachment says: per-subdomain meshes are pdd-mesh's, made under the
+/// diametral circle.
 /// Memory: one piece at a time, plus the open boundary edges (each piece's boundary edges
 /// wait in a hash table, keyed by their endpoints' bits, until the neighbour's piece closes
 /// them): O(largest piece + boundary edges of all pieces) at worst, reported as max_open_edges.

@@ -1,17 +1,13 @@
 /// \file shield_triangle.hpp
 /// pdd::shield_triangle: one shielded triangle b'ac' of dissertation 8.1 (Algorithm 8.2,
-/// steps 8-9), and the reserved marker of shield edges.
+/// steps 8-9); the reserved marker of shield edges is pdd::shield_marker
+/// (core/segment_markers.hpp).
 #pragma once
 
 #include <pdd/core/point.hpp>
-
-#include <limits>
+#include <pdd/core/segment_markers.hpp>
 
 namespace pdd {
-
-/// The boundary marker of shield edges b'c' in shielded domains (and in the kernel's output
-/// for them). Reserved: input segments may not carry it.
-inline constexpr int shield_marker = std::numeric_limits<int>::min() + 1;
 
 /// A shielded triangle (apex, b, c), counter-clockwise: apex is the vertex a of an input angle
 /// theta < 60 deg, b and c are the shield points on its two segments (|ab| = |ac|, eq. 8.1),

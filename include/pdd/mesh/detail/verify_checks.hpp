@@ -233,9 +233,12 @@ inline void report_isolated_vertices(const pslg& d, const verify_impl::vertex_lo
   }
 }
 
-/// Reports nonmanifold edges, boundary edges on no segment and non-Delaunay edges.
+/// Reports nonmanifold edges, boundary edges on no segment and non-Delaunay edges (on input
+/// segments only when `segments_delaunay`: a mesh refined under the diametral lens is
+/// constrained Delaunay, see pdd::segment_encroachment).
 inline void report_edges(const triangle_mesh& m, const verify_impl::edge_table& table,
-                         const std::vector<std::uint8_t>& flags, violation_sink& sink) {
+                         const std::vector<std::uint8_t>& flags, bool segments_delaunay,
+                         violation_sink& sink) {
   namespace vi = verify_impl;
   verification_report& r = sink.r;
   const auto& edges = table.edges();
@@ -252,7 +255,7 @@ inline void report_edges(const triangle_mesh& m, const verify_impl::edge_table& 
       });
     else if (e.count == 1 && !e.on_segment)
       sink.add(r.nonmanifold_edges, [&] { return name() + ": boundary edge on no input segment"; });
-    if (flags[k] == 2)
+    if (flags[k] == 2 && (segments_delaunay || !e.on_segment))
       sink.add(r.delaunay_violations, [&] {
         return name() + ": not locally Delaunay (triangles " + std::to_string(e.tri[0]) + ", " +
                std::to_string(e.tri[1]) + ")";
@@ -289,7 +292,8 @@ verification_report verify_run(const triangle_mesh& m, const pslg& d, const veri
   const std::vector<std::uint8_t> edge_flags = check_edges(m, table);
   report_segments(m, d, lookup, table, sink);
   report_isolated_vertices(d, lookup, table, sink);
-  report_edges(m, table, edge_flags, sink);
+  report_edges(m, table, edge_flags,
+               o.criteria.encroachment == segment_encroachment::diametral_circle, sink);
   r.area_mesh = mesh_area(m, tri_flags);
   r.area_domain = domain_area(d);
   r.area_ok = std::abs(r.area_mesh - r.area_domain) <= o.area_tolerance * std::abs(r.area_domain);

@@ -111,13 +111,17 @@ inline triangle_mesh mesh_components(const pslg& g, const loop_structure& ls,
 }
 
 /// The generate options the switches ask for: q's angle (0 without q: Triangle's default),
-/// a's uniform area bound (none without it).
+/// a's uniform area bound (none without it), Triangle's diametral lenses unless D.
 inline generate_options options_for(const switches& sw, const triangulate_options& o) {
   generate_options g;
   g.threads = o.threads;
   g.subdomains = o.subdomains;
   g.criteria.min_angle_deg = sw.quality ? sw.min_angle_deg : 0.0;
   g.criteria.max_area = sw.max_area > 0.0 ? sw.max_area : std::numeric_limits<double>::infinity();
+  // Triangle refines under diametral lenses unless D asks for a conforming Delaunay mesh (D
+  // takes conforming_pslg, which keeps the circles).
+  g.criteria.encroachment =
+      sw.conforming ? segment_encroachment::diametral_circle : segment_encroachment::diametral_lens;
   return g;
 }
 

@@ -164,7 +164,9 @@ public:
     for (const auto& e : z.boundary_edges) {
       const Face_handle& fh = e.first;
       const int i = e.second;
-      if (!fh->is_constrained(i) || this->is_locally_conform(this->tr, fh, i, p)) continue;
+      if (!fh->is_constrained(i) || (this->is_locally_conform(this->tr, fh, i, p) &&
+                                     !this->is_locally_conform.hides(this->tr, fh, i, p)))
+        continue;
       const auto v1 = fh->vertex(Tr::cw(i));
       const auto v2 = fh->vertex(Tr::ccw(i));
       status = drops_face(v1, v2, shortest) ? CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED

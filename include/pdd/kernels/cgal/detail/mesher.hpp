@@ -11,6 +11,7 @@
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/kernels/cgal/detail/cluster_rule.hpp>
+#include <pdd/kernels/cgal/detail/domain_gabriel.hpp>
 #include <pdd/kernels/cgal/detail/mesher_faces.hpp>
 #include <pdd/kernels/detail/mesher_input.hpp>
 
@@ -25,23 +26,12 @@
 
 #include <algorithm>
 #include <cstdint>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
 namespace pdd::detail::cgal_mesh {
-
-inline constexpr index_t none = std::numeric_limits<index_t>::max();
-
-/// Per-vertex data: the input index (or `none` for a Steiner vertex until numbered) and, for
-/// a Steiner vertex on an input segment, the input endpoints of that segment.
-struct vertex_info {
-  index_t id = none;
-  index_t seg_a = none;
-  index_t seg_b = none;
-};
 
 using vertex_base = CGAL::Triangulation_vertex_base_with_info_2<vertex_info, epick>;
 /// The face info is the nesting level used while marking the domain.
@@ -54,48 +44,6 @@ using cdt =
 using vertex_handle = cdt::Vertex_handle;
 using face_handle = cdt::Face_handle;
 using cgal_point = epick::Point_2;
-
-/// Gabriel test of a constrained edge seen from the domain only: the edge is encroached when
-/// the apex of an adjacent face that is in the domain lies in its closed diametral disk
-/// (CGAL's Is_locally_conforming_Gabriel tests both sides; a vertex beyond the domain, e.g.
-/// across a notch of a subdomain, must not split an interface segment).
-template <class Tr>
-struct domain_gabriel {
-  using Vertex_handle = typename Tr::Vertex_handle;
-  using Face_handle = typename Tr::Face_handle;
-  using Point = typename Tr::Point;
-
-  bool operator()(const Tr& tr, const Face_handle& fh, int i) const {
-    const Vertex_handle& va = fh->vertex(Tr::cw(i));
-    const Vertex_handle& vb = fh->vertex(Tr::ccw(i));
-    const Face_handle nb = fh->neighbor(i);
-    const Vertex_handle& vi = fh->vertex(i);
-    const Vertex_handle& mvi = tr.tds().mirror_vertex(fh, i);
-    if (fh->is_in_domain() && !tr.is_infinite(vi) && !(*this)(tr, va, vb, vi->point()))
-      return false;
-    if (nb->is_in_domain() && !tr.is_infinite(mvi) && !(*this)(tr, va, vb, mvi->point()))
-      return false;
-    return true;
-  }
-
-  bool operator()(const Tr& tr, const Vertex_handle& va, const Vertex_handle& vb) const {
-    Face_handle fh;
-    int i = 0;
-    const bool is_edge = tr.is_edge(va, vb, fh, i);
-    CGAL_assume(is_edge);
-    return (*this)(tr, fh, i);
-  }
-
-  bool operator()(const Tr& tr, const Face_handle& fh, int i, const Point& p) const {
-    return (*this)(tr, fh->vertex(Tr::cw(i)), fh->vertex(Tr::ccw(i)), p);
-  }
-
-  /// p is outside the diametral disk of [va, vb] (exact: the angle va p vb is acute).
-  bool operator()(const Tr& tr, const Vertex_handle& va, const Vertex_handle& vb,
-                  const Point& p) const {
-    return tr.geom_traits().angle_2_object()(va->point(), p, vb->point()) == CGAL::ACUTE;
-  }
-};
 
 /// CGAL's edge level with clusters, using domain_gabriel, with the cluster rule restricted to
 /// clusters that meet the domain (domain_cluster_edges_base). After a segment split it restores
@@ -110,6 +58,11 @@ class domain_edges_base : public domain_cluster_edges_base<Tr, domain_gabriel<Tr
 
 public:
   domain_edges_base(Tr& t, CGAL::Mesh_2::Clusters<Tr>& c) : super(t, c) {}
+
+  /// Uses the lens rule on the subsegments it applies to (null: the disk alone).
+  void set_lens_rule(const lens_rule* rule) { this->is_locally_conform.lens = rule; }
+  /// The lens rule set by set_lens_rule (null: the disk alone).
+  const lens_rule* lens_rule_in_use() const { return this->is_locally_conform.lens; }
 
   /// CGAL's conflict zone of the split point p of a constrained edge, after checking what
   /// CGAL only asserts in debug builds: one of the edge's two faces conflicts with p (its
@@ -299,7 +252,7 @@ inline std::vector<vertex_handle> build_cdt(cdt& tr, const pslg& d) {
 /// level and faces_level (a heap-based bad-face queue) as the face level, started on a
 /// triangulation whose in_domain marks are already set.
 template <class Criteria>
-void refine(cdt& tr, Criteria& criteria) {
+void refine(cdt& tr, Criteria& criteria, const lens_rule* lens) {
   using edges_level =
       CGAL::Mesh_2::Refine_edges_with_clusters<cdt, domain_gabriel<cdt>, domain_edges_base<cdt>>;
   using faces = faces_level<cdt, Criteria, edges_level>;
@@ -307,6 +260,7 @@ void refine(cdt& tr, Criteria& criteria) {
   CGAL::Null_mesh_visitor null_visitor;
   CGAL::Mesh_2::Clusters<cdt> clusters(tr);
   edges_level edges(tr, clusters, null_level);
+  edges.set_lens_rule(lens);
   faces face_level(tr, criteria, edges);
   CGAL::Mesh_2::Refine_edges_visitor_from_faces<faces> visitor(face_level, edges, null_visitor);
   clusters.create_clusters();

@@ -57,13 +57,25 @@ public:
       if (f->is_in_domain()) push_if_bad(f);
   }
 
+  /// The conflict zone of p, the refinement point of fh: CGAL's (from the face that contains
+  /// p) under the diametral disk, where Ruppert's lemma puts every such p in sight of fh. Under
+  /// the lens p may lie beyond a segment, so the zone grows from fh itself, and the segment
+  /// that hides p is on its boundary, where the edge level finds it (domain_gabriel::hides).
   Zone conflicts_zone_impl(const Point& p, Face_handle fh) {
     Zone zone;
     Tr& t = triangulation_ref_impl();
     zone.fh = t.locate(p, zone.locate_type, zone.i, fh);
     zone.parent_face = fh;
-    t.get_conflicts_and_boundary(p, std::back_inserter(zone.faces),
-                                 std::back_inserter(zone.boundary_edges), fh);
+    if (previous_.lens_rule_in_use() == nullptr) {
+      t.get_conflicts_and_boundary(p, std::back_inserter(zone.faces),
+                                   std::back_inserter(zone.boundary_edges), fh);
+      return zone;
+    }
+    zone.faces.push_back(fh);
+    auto out =
+        std::make_pair(std::back_inserter(zone.faces), std::back_inserter(zone.boundary_edges));
+    for (int i = 0; i < 3; ++i)
+      out = t.propagate_conflicts(p, fh, i, out);
     return zone;
   }
 

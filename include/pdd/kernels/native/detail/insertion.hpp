@@ -40,17 +40,18 @@ public:
     }
   }
 
-  /// The constrained edges on the cavity's boundary that p encroaches (lies in their closed
-  /// diametral disk or not strictly on the cavity's side), as edge references.
-  const std::vector<ref_t>& encroached_segments(const triangulation& tr, const point& p) {
+  /// The constrained edges on the cavity's boundary that p encroaches (`encroaches(t, i, p)`
+  /// for edge i of cavity triangle t: in its diametral disk or lens) or that hide p (p not
+  /// strictly on the cavity's side), as edge references.
+  template <class Encroaches>
+  const std::vector<ref_t>& encroached_segments(const triangulation& tr, const point& p,
+                                                Encroaches encroaches) {
     encroached_.clear();
     for (const std::uint32_t t : members_)
       for (int i = 0; i < 3; ++i) {
         if (!tr.constrained(t, i) || make_ref(t, i) == crossing_ || is_crossing_twin(tr, t, i))
           continue;
-        const point& a = tr.at(t, next3(i));
-        const point& b = tr.at(t, prev3(i));
-        if (orient(a, b, p) <= 0 || in_diametral_disk(a, b, p))
+        if (orient(tr.at(t, next3(i)), tr.at(t, prev3(i)), p) <= 0 || encroaches(t, i, p))
           encroached_.push_back(make_ref(t, i));
       }
     return encroached_;

@@ -5,7 +5,10 @@
 /// area bound first, the largest excess first; then the skinny ones, the shortest edge first,
 /// from a bucketed queue) gets its refinement point (detail::off_centre), unless that point
 /// encroaches a subsegment, which is split instead and the triangle reconsidered. A subsegment
-/// is encroached only by a vertex on a domain side of it (as in pdd::cgal::mesher).
+/// is encroached only by a vertex on a domain side of it (as in pdd::cgal::mesher), in its
+/// diametral disk or, on an input segment under segment_encroachment::diametral_lens, in its
+/// lens (Chew; Triangle's rule without -D); a refinement point a segment hides from its
+/// triangle encroaches the segment under either rule.
 ///
 /// Small input angles (Shewchuk 2002, sec. 3.7 / Shewchuk 1997 sec. 3.5): with concentric
 /// shells, the two segments of a small angle are split at equal distances from its apex; a
@@ -19,6 +22,7 @@
 #include <pdd/concepts/sizing_field.hpp>
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/triangle_measures.hpp>
+#include <pdd/kernels/detail/encroachment.hpp>
 #include <pdd/kernels/detail/off_centre.hpp>
 #include <pdd/kernels/native/detail/insertion.hpp>
 #include <pdd/kernels/native/detail/segments.hpp>
@@ -83,7 +87,7 @@ public:
   refiner(triangulation& tr, cavity& cav, segment_ids& ids, const pslg& d, const mesh_criteria& c,
           const S& sizing)
       : tr_(tr), cav_(cav), ids_(ids), d_(d), shape_bound_(c.shape_bound()), max_area_(c.max_area),
-        sizing_(sizing) {}
+        lens_cosine_(c.lens_cosine()), lens_(lens_segments(d, c)), sizing_(sizing) {}
 
   /// Refines until no subsegment is encroached and no triangle of the domain is bad (except
   /// those left at small input angles, see the file comment).
@@ -129,13 +133,22 @@ private:
     if (q.bucket >= 0) bad_.push(q.bucket, {t, tr_.corner[t]});
   }
 
-  /// A vertex on a domain side of constrained edge i of t lies in its diametral disk.
+  /// A vertex on a domain side of constrained edge i of t encroaches it (encroaches).
   bool encroached(std::uint32_t t, int i) const {
-    const point &a = tr_.at(t, next3(i)), &b = tr_.at(t, prev3(i));
-    if (tr_.in_domain(t) && in_diametral_disk(a, b, tr_.at(t, i))) return true;
+    if (tr_.in_domain(t) && encroaches(t, i, tr_.at(t, i))) return true;
     const ref_t n = tr_.adj[t][i];
     return n != no_ref && tr_.in_domain(ref_tri(n)) &&
-           in_diametral_disk(a, b, tr_.at(ref_tri(n), ref_edge(n)));
+           encroaches(t, i, tr_.at(ref_tri(n), ref_edge(n)));
+  }
+
+  /// p lies in the closed diametral disk of constrained edge i of t (exact) and, on an input
+  /// segment under segment_encroachment::diametral_lens, in its lens as well.
+  bool encroaches(std::uint32_t t, int i, const point& p) const {
+    const point &a = tr_.at(t, next3(i)), &b = tr_.at(t, prev3(i));
+    if (!in_diametral_disk(a, b, p)) return false;
+    if (lens_.empty()) return true;
+    const index_t seg = ids_.of_edge(tr_.corner[t][next3(i)], tr_.corner[t][prev3(i)]);
+    return seg == no_index || lens_[seg] == 0 || in_diametral_lens(a, b, p, lens_cosine_);
   }
 
   void queue_if_encroached(std::uint32_t t, int i) {
@@ -203,7 +216,8 @@ private:
     const auto cc = CGAL::circumcenter(cp(a), cp(b), cp(c));
     const point p = off_centre(a, b, c, point{cc.x(), cc.y()}, shape_bound_);
     cav_.grow(tr_, p, {e.t}, no_ref);
-    const std::vector<ref_t>& enc = cav_.encroached_segments(tr_, p);
+    const std::vector<ref_t>& enc = cav_.encroached_segments(
+        tr_, p, [this](std::uint32_t t, int i, const point& q) { return encroaches(t, i, q); });
     if (!enc.empty()) {
       forced_.clear();
       for (const ref_t r : enc)
@@ -259,7 +273,8 @@ private:
   cavity& cav_;
   segment_ids& ids_;
   const pslg& d_;
-  double shape_bound_, max_area_;
+  double shape_bound_, max_area_, lens_cosine_;
+  std::vector<char> lens_; ///< per input segment: the lens rule applies (lens_segments)
   const S& sizing_;
   bad_queue bad_;
   std::vector<std::pair<index_t, index_t>> segments_, forced_;
