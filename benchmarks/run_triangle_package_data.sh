@@ -11,7 +11,7 @@
 set -euo pipefail
 build=${1:?build dir}
 triangle=${2:?Triangle 1.6 executable}
-data=${3:?the package's triangle/data folder}
+data=${3:?the triangle package data folder}
 pdd="$build/examples/drivers/pdd-triangle"
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/triangle-package-data.jsonl
@@ -22,12 +22,13 @@ trap 'rm -rf "$dir"' EXIT
 run() {
   local label=$1 input=$2 sw=$3 stem=${2%.*}
   rm -f "$dir/$stem".1.*
-  /usr/bin/time -f "%e" -o "$dir/time" "${@:4}" >/dev/null
-  python3 - "$out" "$label" "$input" "$sw" "$dir/$stem.1.ele" "$dir/time" <<'PY'
-import json, sys
-out, label, name, sw, ele, timing = sys.argv[1:]
+  /usr/bin/time -f "%e" -o "$dir/time" "${@:4}" >/dev/null 2>"$dir/err" || true
+  python3 - "$out" "$label" "$input" "$sw" "$dir/$stem.1.ele" "$dir/time" "$dir/err" <<'PY'
+import json, os, sys
+out, label, name, sw, ele, timing, err = sys.argv[1:]
 line = {"program": label, "input": name, "switches": sw,
-        "triangles": int(open(ele).readline().split()[0]),
+        "triangles": int(open(ele).readline().split()[0]) if os.path.exists(ele) else None,
+        "error": open(err).read().strip().splitlines()[-1] if not os.path.exists(ele) else None,
         "wall_seconds": float(open(timing).read().split()[-1])}
 open(out, "a").write(json.dumps(line) + "\n")
 PY
@@ -57,6 +58,10 @@ runs = lines[1:]
 for t in (r for r in runs if r["program"].startswith("Triangle")):
     p = next(x for x in runs if x["input"] == t["input"] and x["switches"] == t["switches"]
              and x["program"] == "pdd-triangle")
+    if p["triangles"] is None:
+        print("| %s | `-%s` | %d | error: %s | | **no** | %.2f | |" % (
+            t["input"], t["switches"], t["triangles"], p["error"], t["wall_seconds"]))
+        continue
     d = p["triangles"] - t["triangles"]
     ok = abs(d) <= max(12, 0.15 * t["triangles"])
     print("| %s | `-%s` | %d | %d | %+d (%+.1f %%) | %s | %.2f | %.2f |" % (
