@@ -105,7 +105,7 @@ TEST(PolyRead, CommentsBlankLinesTabsAndCrlfEverywhere) {
   EXPECT_EQ(g.regions[0].attribute, 3.0);
   EXPECT_EQ(g.regions[0].max_area, 0.01);
   EXPECT_EQ(g.regions[1].attribute, 4.0);
-  EXPECT_EQ(g.regions[1].max_area, -1.0); // omitted area: no constraint
+  EXPECT_EQ(g.regions[1].max_area, 4.0); // omitted area: the attribute, as Triangle reads it
 }
 
 TEST(PolyRead, NumberForms) {

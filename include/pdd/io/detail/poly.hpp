@@ -378,7 +378,10 @@ inline void read_poly_regions(triangle_file_parser& p, pslg& g) {
     region r;
     r.p = {p.real(1, "the region x coordinate"), p.real(2, "the region y coordinate")};
     r.attribute = p.real(3, "the regional attribute");
-    r.max_area = p.fields() == 5 ? p.real(4, "the region's maximum area") : -1.0;
+    // Without a fifth field Triangle 1.6 takes the fourth as the area bound too (triangle.c,
+    // readholes: regionlist[index] = regionlist[index - 1]); the triangle package's la.poly
+    // relies on it for -pqa. A bound <= 0 is no bound, as in Triangle.
+    r.max_area = p.fields() == 5 ? p.real(4, "the region's maximum area") : r.attribute;
     g.regions.push_back(r);
   }
   if (p.try_next()) p.fail("expected the end of the file after the regional attributes");
