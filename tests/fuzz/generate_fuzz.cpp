@@ -2,7 +2,9 @@
 // (pdd::parse_poly from memory), validated, meshed by pdd::generate with N = 1 and N = 2, and
 // every mesh is checked by pdd::verify with its default options, as README's library example
 // calls it (on the PSLG given to generate; it reads the faces and picks the exemptions itself,
-// as pdd-mesh --verify does): exact Delaunay, orientation, conformity to the input
+// as pdd-mesh --verify does; half the inputs are meshed under the diametral lens, Triangle's
+// rule for -q without -D, and verified as constrained Delaunay): exact Delaunay, orientation,
+// conformity to the input
 // segments, the domain area covered, the area bound, and the angle bound on every triangle that
 // is not exempt.
 //
@@ -303,12 +305,23 @@ double smallest_segment_angle_deg(const pdd::pslg& g) {
   return best;
 }
 
-/// The divisor d in [8, 4096] of the area bound for these bytes (FNV-1a hash, log-uniform).
-double area_divisor(const std::uint8_t* data, std::size_t size) {
+/// The FNV-1a hash of the bytes: the source of the choices that are not in the .poly.
+std::uint64_t input_hash(const std::uint8_t* data, std::size_t size) {
   std::uint64_t h = 14695981039346656037ull;
   for (std::size_t i = 0; i < size; ++i)
     h = (h ^ data[i]) * 1099511628211ull;
-  return std::exp2(3.0 + 9.0 * static_cast<double>(h >> 11) * 0x1.0p-53);
+  return h;
+}
+
+/// The divisor d in [8, 4096] of the area bound for these bytes (log-uniform in the hash).
+double area_divisor(const std::uint8_t* data, std::size_t size) {
+  return std::exp2(3.0 + 9.0 * static_cast<double>(input_hash(data, size) >> 11) * 0x1.0p-53);
+}
+
+/// Whether these bytes are meshed under the diametral lens (pdd::segment_encroachment), for
+/// half the inputs (a bit of the hash the area divisor does not use).
+bool under_diametral_lens(const std::uint8_t* data, std::size_t size) {
+  return (input_hash(data, size) & 1u) != 0;
 }
 
 /// The mesh criteria for d (A = area / divisor, 20.7 deg), or nothing when the quality mesh of
@@ -413,8 +426,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       ++counts.skipped[d->general];
       return 0;
     }
-    mesh_and_check(*d, *c, 1);
-    mesh_and_check(*d, *c, 2);
+    pdd::mesh_criteria criteria = *c;
+    if (under_diametral_lens(data, size)) // half the inputs: Triangle's rule for -q without -D
+      criteria.encroachment = pdd::segment_encroachment::diametral_lens;
+    mesh_and_check(*d, criteria, 1);
+    mesh_and_check(*d, criteria, 2);
   } catch (const std::exception& e) {
     finding(std::string("unexpected exception: ") + e.what());
   }
