@@ -166,6 +166,25 @@ TEST(GeneralPslg, EachKindOfInputAlone) {
   EXPECT_NEAR(pdd::verify(r.mesh, cases[3].second, vo).area_mesh, 16.0, 1e-9);
 }
 
+TEST(GeneralPslg, DiametralLensBesideAnInterfaceAtASmallAngle) {
+  // A fuzz finding: a quadrilateral and its diagonal, decoupled at N = 2 (the diagonal an
+  // interface under the circle) at 18.4 deg to a side under the lens; the two split each other
+  // down to 1e-15. A subdomain with interface pieces is now refined under the circle.
+  pslg d;
+  d.add_loop(std::vector<pdd::point>{{0, 0}, {4, 0}, {4, 4}, {0, 2}}, 1);
+  d.add_segment(0, 2);
+  for (const unsigned n : {1u, 2u}) {
+    pdd::generate_options o = options(12.0 / 22.376899094669803); // the finding's bound
+    o.subdomains = n;
+    o.criteria.encroachment = pdd::segment_encroachment::diametral_lens;
+    const pdd::generate_result r = pdd::generate(d, o);
+    pdd::verify_options vo;
+    vo.criteria = o.criteria;
+    const pdd::verification_report rep = pdd::verify(r.mesh, d, vo);
+    EXPECT_TRUE(rep.ok()) << n << (rep.messages.empty() ? "" : ": " + rep.messages.front());
+  }
+}
+
 TEST(GeneralPslg, RegionalAttributesAndAreasPerFace) {
   for (const bool combined : {false, true}) {
     SCOPED_TRACE(combined ? "combined" : "layered");

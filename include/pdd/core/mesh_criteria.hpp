@@ -38,8 +38,9 @@ enum class segment_encroachment {
   /// 180 - 2 min_angle_deg (Chew's rule, Triangle's default for -q without -D): fewer segment
   /// splits, so meshes of Triangle's size when no area bound is asked for; the result is
   /// constrained Delaunay (an edge on an input segment may not be locally Delaunay, every other
-  /// edge is). Interface pieces and shield edges keep the circle, so that the union of the
-  /// subdomain meshes stays Delaunay across them.
+  /// edge is). A kernel input with interface pieces or shield edges (the subdomains of a
+  /// decoupled run, a shielded domain) is refined under the circle throughout, so that the
+  /// union of the subdomain meshes stays Delaunay across them.
   diametral_lens,
 };
 

@@ -164,13 +164,17 @@ public:
     for (const auto& e : z.boundary_edges) {
       const Face_handle& fh = e.first;
       const int i = e.second;
-      if (!fh->is_constrained(i) || (this->is_locally_conform(this->tr, fh, i, p) &&
-                                     !this->is_locally_conform.hides(this->tr, fh, i, p)))
-        continue;
+      if (!fh->is_constrained(i)) continue;
+      const bool encroaches = !this->is_locally_conform(this->tr, fh, i, p);
+      // Under the lens a point can lie beyond a segment without encroaching it (never under
+      // the disk, Ruppert's lemma): the segment is split, as the disk would have had it split
+      // by the face's own apex, and the cluster rule does not leave the face.
+      if (!encroaches && !this->is_locally_conform.hides(this->tr, fh, i, p)) continue;
       const auto v1 = fh->vertex(Tr::cw(i));
       const auto v2 = fh->vertex(Tr::ccw(i));
-      status = drops_face(v1, v2, shortest) ? CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED
-                                            : CGAL::CONFLICT_BUT_ELEMENT_CAN_BE_RECONSIDERED;
+      status = encroaches && drops_face(v1, v2, shortest)
+                   ? CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED
+                   : CGAL::CONFLICT_BUT_ELEMENT_CAN_BE_RECONSIDERED;
       if (status != CGAL::CONFLICT_AND_ELEMENT_SHOULD_BE_DROPPED)
         this->add_constrained_edge_to_be_conformed(v1, v2);
     }
