@@ -12,9 +12,7 @@
 
 #include <CGAL/exceptions.h>
 
-#include <algorithm>
 #include <exception>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -30,11 +28,8 @@ mesher_result refine_domain(const pslg& d, const mesh_criteria& c, const S& sizi
     mark_domain(tr, d.holes, d.rule);
     if (d.rule == domain_rule::triangle) release_outside_segments(tr, d.holes);
     cgal::sizing_criteria<cdt, S> crit(c.shape_bound(), c.max_area, sizing);
-    std::optional<lens_rule> lens; // only where a segment takes it: else exactly the circle's run
-    std::vector<char> lensed = lens_segments(d, c);
-    if (std::find(lensed.begin(), lensed.end(), char{1}) != lensed.end())
-      lens.emplace(lens_rule{c.lens_cosine(), segment_table(d), std::move(lensed)});
-    refine(tr, crit, lens ? &*lens : nullptr);
+    const lens_rule lens{c.lens_cosine()};
+    refine(tr, crit, uses_diametral_lens(d, c) ? &lens : nullptr);
   }
   return extract(tr, d, vh);
 }

@@ -8,25 +8,20 @@
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/segment_markers.hpp>
 
-#include <cstddef>
-#include <vector>
+#include <algorithm>
 
 namespace pdd::detail {
 
-/// Per segment of d: 1 where the lens rule applies; empty where none does. It applies under
-/// diametral_lens to every segment of an input without interface pieces or shield edges (whose
-/// disks must stay empty for the union of the subdomain meshes to be Delaunay). An input that
-/// has them is refined under the circle throughout: an interface piece under the circle and an
-/// input segment under the lens meeting at a small angle encroached each other in turn, split
-/// down to the floating-point resolution (a fuzz finding: a quadrilateral's diagonal, an
-/// interface at N = 2, at 18.4 deg to a side).
-inline std::vector<char> lens_segments(const pslg& d, const mesh_criteria& c) {
-  std::vector<char> lens;
-  if (c.encroachment != segment_encroachment::diametral_lens) return lens;
-  for (const segment& s : d.segments)
-    if (is_reserved_marker(s.marker)) return lens;
-  lens.assign(d.segments.size(), 1);
-  return lens;
+/// Whether d is refined under the lens: criteria asking for diametral_lens and no interface
+/// piece or shield edge in d (whose disks must stay empty for the union of the subdomain meshes
+/// to be Delaunay). An input that has them is refined under the circle throughout: an interface
+/// piece under the circle and an input segment under the lens meeting at a small angle
+/// encroached each other in turn, split down to the floating-point resolution (a fuzz finding:
+/// a quadrilateral's diagonal, an interface at N = 2, at 18.4 deg to a side).
+inline bool uses_diametral_lens(const pslg& d, const mesh_criteria& c) {
+  return c.encroachment == segment_encroachment::diametral_lens &&
+         std::none_of(d.segments.begin(), d.segments.end(),
+                      [](const segment& s) { return is_reserved_marker(s.marker); });
 }
 
 /// For p in the closed diametral disk of [a, b] (tested exactly before): p lies in the

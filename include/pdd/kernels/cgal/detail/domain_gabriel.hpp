@@ -7,12 +7,10 @@
 #include <pdd/core/index.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/kernels/detail/encroachment.hpp>
-#include <pdd/kernels/detail/mesher_input.hpp>
 
 #include <CGAL/enum.h>
 
 #include <limits>
-#include <vector>
 
 namespace pdd::detail::cgal_mesh {
 
@@ -26,29 +24,17 @@ struct vertex_info {
   index_t seg_b = none;
 };
 
-/// The diametral lens rule of the CGAL kernel (segment_encroachment::diametral_lens): which
-/// subsegments take it (those on input segments, lens_segments), found from the vertex infos.
+/// The diametral lens rule of the CGAL kernel (segment_encroachment::diametral_lens), set
+/// where uses_diametral_lens holds.
 struct lens_rule {
-  double cosine;          ///< mesh_criteria::lens_cosine
-  segment_table table;    ///< the input segments by their endpoints
-  std::vector<char> lens; ///< per input segment (lens_segments)
-
-  /// The subsegment [va, vb] lies on an input segment that takes the lens.
-  template <class Vertex_handle>
-  bool applies(const Vertex_handle& va, const Vertex_handle& vb) const {
-    const vertex_info &a = va->info(), &b = vb->info();
-    const index_t s = a.seg_a != none   ? table.find(a.seg_a, a.seg_b)
-                      : b.seg_a != none ? table.find(b.seg_a, b.seg_b)
-                                        : table.find(a.id, b.id);
-    return s != none && lens[s] != 0;
-  }
+  double cosine; ///< mesh_criteria::lens_cosine
 };
 
 /// Gabriel test of a constrained edge seen from the domain only: the edge is encroached when
 /// the apex of an adjacent face that is in the domain lies in its closed diametral disk
 /// (CGAL's Is_locally_conforming_Gabriel tests both sides; a vertex beyond the domain, e.g.
 /// across a notch of a subdomain, must not split an interface segment) and, with a lens rule,
-/// on an input segment, in its diametral lens too.
+/// in its diametral lens too.
 template <class Tr>
 struct domain_gabriel {
   using Vertex_handle = typename Tr::Vertex_handle;
@@ -84,11 +70,11 @@ struct domain_gabriel {
   }
 
   /// p is outside the diametral disk of [va, vb] (exact: the angle va p vb is acute), or,
-  /// with a lens rule that applies to it, outside its lens.
+  /// with a lens rule, outside its lens.
   bool operator()(const Tr& tr, const Vertex_handle& va, const Vertex_handle& vb,
                   const Point& p) const {
     if (tr.geom_traits().angle_2_object()(va->point(), p, vb->point()) == CGAL::ACUTE) return true;
-    if (lens == nullptr || !lens->applies(va, vb)) return false;
+    if (lens == nullptr) return false;
     const point a{va->point().x(), va->point().y()}, b{vb->point().x(), vb->point().y()};
     return !in_diametral_lens(a, b, point{p.x(), p.y()}, lens->cosine);
   }

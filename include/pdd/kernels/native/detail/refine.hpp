@@ -87,7 +87,7 @@ public:
   refiner(triangulation& tr, cavity& cav, segment_ids& ids, const pslg& d, const mesh_criteria& c,
           const S& sizing)
       : tr_(tr), cav_(cav), ids_(ids), d_(d), shape_bound_(c.shape_bound()), max_area_(c.max_area),
-        lens_cosine_(c.lens_cosine()), lens_(lens_segments(d, c)), sizing_(sizing) {}
+        lens_cosine_(c.lens_cosine()), lens_(uses_diametral_lens(d, c)), sizing_(sizing) {}
 
   /// Refines until no subsegment is encroached and no triangle of the domain is bad (except
   /// those left at small input angles, see the file comment).
@@ -146,9 +146,7 @@ private:
   bool encroaches(std::uint32_t t, int i, const point& p) const {
     const point &a = tr_.at(t, next3(i)), &b = tr_.at(t, prev3(i));
     if (!in_diametral_disk(a, b, p)) return false;
-    if (lens_.empty()) return true;
-    const index_t seg = ids_.of_edge(tr_.corner[t][next3(i)], tr_.corner[t][prev3(i)]);
-    return seg == no_index || lens_[seg] == 0 || in_diametral_lens(a, b, p, lens_cosine_);
+    return !lens_ || in_diametral_lens(a, b, p, lens_cosine_);
   }
 
   void queue_if_encroached(std::uint32_t t, int i) {
@@ -274,7 +272,7 @@ private:
   segment_ids& ids_;
   const pslg& d_;
   double shape_bound_, max_area_, lens_cosine_;
-  std::vector<char> lens_; ///< per input segment: the lens rule applies (lens_segments)
+  bool lens_; ///< refined under the lens (uses_diametral_lens)
   const S& sizing_;
   bad_queue bad_;
   std::vector<std::pair<index_t, index_t>> segments_, forced_;
