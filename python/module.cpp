@@ -183,6 +183,8 @@ py::dict triangulate(const py::dict& tri, const std::string& opts, unsigned thre
     t = triangle::triangulate(std::move(g), sw, {threads, subdomains});
   }
   warn_duplicates(t);
+  warn_empty_domain(t);
+  raise_failed_check(t);
   if (sw.verbose > 0) { // Triangle's library prints its statistics for V; the summary here
     const mesh_statistics q = compute_statistics(t.mesh);
     py::print("pdd.triangulate:", q.vertices, "vertices,", q.triangles, "triangles, angles",
@@ -401,8 +403,15 @@ or (n, k) are carried to every output vertex: interpolated linearly over the inp
 Delaunay triangulation at new vertices, the edge's mean at o2's nodes. r refines the previous
 mesh of 'triangles' (its vertices kept, first; with a bare a its 'triangle_max_area', <= 0: none;
 its 'triangle_attributes' carried to the new triangles inside each old one); without r those keys
-are not read, with a warning. Any other switch or unknown key raises ValueError. A vertex equal to an earlier one
-(without p) is ignored with a UserWarning, as Triangle ignores it.
+are not read, with a warning. C checks the mesh with pdd's verifier (exact Delaunay, or
+constrained Delaunay without D; conformity; the domain's area; the angle and area bounds) and
+raises RuntimeError with its messages when it fails. Any other switch or unknown key raises
+ValueError. A vertex equal to an earlier one (without p) is ignored with a UserWarning, as
+Triangle ignores it. A PSLG that encloses no domain (no face enclosed by segments, or hole
+points eat every one) gives Triangle's empty mesh with a UserWarning: 'triangles' (0, 3).
+Markers are Triangle's: a vertex keeps its nonzero marker, else takes a nonzero marker of a
+segment it lies on, else 1 on the boundary, else 0; segments likewise (nonzero, else 1 on the
+boundary, else 0).
 Returns a dict: vertices, vertex_markers (n, 1), vertex_attributes (n, k) (when given),
 triangles (t, 3) int32, segments and
 segment_markers (with p or c), holes and regions (copied, with p), triangle_attributes (with A),

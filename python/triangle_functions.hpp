@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -33,6 +34,20 @@ inline void warn_duplicates(const triangle::triangulation& t) {
        (d.size() > 1 ? " (and " + std::to_string(d.size() - 1) + " more vertices duplicate others)"
                      : std::string()) +
        ": ignored as Triangle ignores them, no triangle uses them");
+}
+
+/// Triangle's empty mesh of a PSLG that encloses no domain: a warning saying why.
+inline void warn_empty_domain(const triangle::triangulation& t) {
+  if (!t.empty_domain.empty()) warn(t.empty_domain + "; the mesh has no triangles (as Triangle's)");
+}
+
+/// Switch C: raises RuntimeError with pdd::verify's messages when the check failed.
+inline void raise_failed_check(const triangle::triangulation& t) {
+  if (!t.check || t.check->ok()) return;
+  std::string message = "the mesh check (switch C, pdd's verifier) failed:";
+  for (const std::string& m : t.check->messages)
+    message += "\n  " + m;
+  throw std::runtime_error(message);
 }
 
 /// A new C-contiguous (rows, cols) array, element (r, c) = value(r, c).

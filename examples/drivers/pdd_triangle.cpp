@@ -5,10 +5,11 @@
 //   pdd-triangle [-SWITCHES ...] INPUT[.poly] [--threads T] [--subdomains N]
 //
 // Switches (Triangle 1.6's letters; pdd::triangle::parse_switches): p, r, q[angle], a[area],
-// a (regional area bounds), A, c, D, S[n], e, v, o2, Q, V, N, E, P, B, I, O, z, j, n (and i F l
-// s L X, ignored). Without p (and a .poly name) the input is a vertex set, NAME.node. Every
-// other switch is refused by name, with the reason.
-// Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 4 internal error.
+// a (regional area bounds), A, c, D, S[n], e, v, o2, C (pdd's verifier), Q, V, N, E, P, B, I,
+// O, z, j, n (and i F l s L X, ignored). Without p (and a .poly name) the input is a vertex set,
+// NAME.node. Every other switch is refused by name, with the reason.
+// Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 3 the check of -C failed (the
+// files are written), 4 internal error, 5 an input beyond double precision.
 #include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
@@ -33,7 +34,8 @@
 
 namespace {
 
-constexpr int ok = 0, bad_input = 1, usage = 2, internal = 4, unresolvable = 5;
+constexpr int ok = 0, bad_input = 1, usage = 2, verification_failed = 3, internal = 4,
+              unresolvable = 5;
 
 struct cli_options {
   std::string input;
@@ -159,6 +161,30 @@ void input_warnings(const pdd::pslg& in, const pdd::triangle::triangulation& t) 
                 pdd::to_string(in.vertices[d[0]]).c_str(), std::size_t{d[0]}, std::size_t{d[1]});
 }
 
+/// Why the mesh of a PSLG that encloses no domain is empty (on stderr, even with Q: an empty
+/// mesh is never silent).
+void empty_domain_warning(const std::string& input, const pdd::triangle::triangulation& t) {
+  if (!t.empty_domain.empty())
+    std::fprintf(stderr,
+                 "pdd-triangle: warning: %s: %s; the mesh has no triangles (as Triangle's)\n",
+                 input.c_str(), t.empty_domain.c_str());
+}
+
+/// -C: pdd::verify's verdict (the messages on stderr); verification_failed when it failed.
+int check_outcome(const pdd::triangle::triangulation& t, const pdd::triangle::switches& sw) {
+  if (!t.check) return ok;
+  if (t.check->ok()) {
+    if (!sw.quiet)
+      std::printf("Checked the mesh with pdd's verifier (-C): exact Delaunay, conformity, the "
+                  "domain's area and the bounds hold.\n");
+    return ok;
+  }
+  std::fprintf(stderr, "pdd-triangle: the mesh check (-C, pdd's verifier) FAILED\n");
+  for (const std::string& m : t.check->messages)
+    std::fprintf(stderr, "  %s\n", m.c_str());
+  return verification_failed;
+}
+
 /// Writes the .node, .ele, .poly and .neigh files the switches ask for.
 void write_outputs(const pdd::triangle::file_names& f, const pdd::triangle::switches& sw,
                    const pdd::pslg& in, const pdd::triangle::triangulation& t) {
@@ -220,6 +246,7 @@ int run(const cli_options& o) {
   const pdd::triangle::triangulation t = sw.refine ? pdd::triangle::refine(previous, sw, o.run)
                                                    : pdd::triangle::triangulate(in, sw, o.run);
   if (!sw.quiet) input_warnings(in, t);
+  empty_domain_warning(o.input, t);
   if (!sw.quiet) report_meshing(t, sw, ms_since(tm));
   write_outputs(f, sw, in, t);
   if (!sw.quiet) {
@@ -227,7 +254,7 @@ int run(const cli_options& o) {
     print_statistics(in, t, sw);
     if (sw.verbose > 0) print_quality(t.mesh);
   }
-  return ok;
+  return check_outcome(t, sw);
 }
 
 int fail(const char* what, const std::exception& e, int code) {
@@ -288,8 +315,9 @@ int main(int argc, char** argv) {
              "(regional areas), A, c (convex hull), D (conforming Delaunay: every triangle "
              "Delaunay, segments split; the whole domain on one triangulation), S[n] (at most n "
              "Steiner points; with q, a or D the whole domain on one triangulation), e (.edge), v "
-             "(Voronoi: .v.node, .v.edge), o2, Q, V, N, E, P, B, I, O, z, j, n; i F l s L X are "
-             "accepted and ignored. Refused, with the reason: u w W Y g C.");
+             "(Voronoi: .v.node, .v.edge), o2, C (check the mesh with pdd's verifier; exit 3 when "
+             "it fails), Q, V, N, E, P, B, I, O, z, j, n; i F l s L X are accepted and ignored. "
+             "Refused, with the reason: u w W Y g.");
   // --version (CLI11) exits before Triangle's switches are read (run_reporting_errors)
   pdd::drivers::add_version_flag(app, "pdd-triangle");
   try {

@@ -49,6 +49,15 @@ private:
   std::vector<std::size_t> ids_;
 };
 
+/// A PSLG that encloses no domain: its vertices are all collinear, or no face is enclosed by
+/// segments, or hole points eat every enclosed face. Triangle writes an empty mesh for such an
+/// input (pdd::triangle::triangulate does too, with triangulation::empty_domain saying why);
+/// pdd::generate refuses it.
+class empty_domain_error : public geometry_error {
+public:
+  using geometry_error::geometry_error;
+};
+
 /// The domain cannot be decomposed as asked (too thin, too few junction triangles, ...).
 class decomposition_error : public error {
 public:

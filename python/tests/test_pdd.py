@@ -91,7 +91,6 @@ def test_switches_A_n_B_V_and_suppressed_outputs(capsys):
     ("pa0", "greater than zero"),
     ("pqY", "switch -Y"),
     ("pqo3", "switch -o3"),
-    ("pqC", "pdd-verify"),
 ])
 def test_refused_switches(opts, message):
     with pytest.raises(ValueError, match=message.replace("-", "\\-")):
@@ -281,6 +280,46 @@ def test_triangles_internal_switches_are_ignored():
     sq = square()
     assert np.array_equal(pdd.triangulate(sq, "pqa0.1iFlsLX")["triangles"],
                           pdd.triangulate(sq, "pqa0.1")["triangles"])
+
+
+def triangle_box():
+    """Triangle's box example written out: only the left side (marker 5) of the outer box is a
+    segment, the inner square is a hole (one side of marker 10)."""
+    v = np.array([[0, 0], [0, 3], [3, 0], [3, 3], [1, 1], [1, 2], [2, 1], [2, 2]], dtype=float)
+    return dict(vertices=v, vertex_markers=np.array([[0], [0], [0], [33], [0], [0], [0], [0]]),
+                segments=np.array([[0, 1], [4, 6], [6, 7], [7, 5], [5, 4]]),
+                segment_markers=np.array([[5], [0], [0], [10], [0]]),
+                holes=np.array([[1.5, 1.5]]))
+
+
+def test_boundary_markers_are_triangles():
+    # Triangle 1.6 (triangle -pc box.poly): vertex markers 5 5 1 33 1 10 1 10
+    out = pdd.triangulate(triangle_box(), "pc")
+    assert out["vertex_markers"].ravel().tolist() == [5, 5, 1, 33, 1, 10, 1, 10]
+    assert sorted(out["segment_markers"].ravel().tolist()) == [1, 1, 1, 1, 1, 1, 5, 10]
+    # the square's boundary vertices and edges are marked 1 (its markers are 0)
+    q = pdd.triangulate(square(), "pqa0.01")
+    v, m = q["vertices"], q["vertex_markers"].ravel()
+    on_boundary = (np.isclose(v, 0) | np.isclose(v, 1)).any(axis=1)
+    assert (m[on_boundary] == 1).all() and (m[~on_boundary] == 0).all()
+    assert (q["segment_markers"] == 1).all()
+
+
+def test_a_pslg_that_encloses_no_domain_gives_an_empty_mesh():
+    # Triangle 1.6 writes no triangle for box.poly without c; its vertices keep their markers
+    for opts in ("p", "pq", "pqa0.1"):
+        with pytest.warns(UserWarning, match="encloses no domain"):
+            out = pdd.triangulate(triangle_box(), opts)
+        assert out["triangles"].shape == (0, 3)
+        assert out["vertex_markers"].ravel().tolist() == [5, 5, 0, 33, 0, 10, 0, 10]
+
+
+def test_switch_C_checks_the_mesh_with_pdds_verifier():
+    key = read_poly("key.poly")
+    for opts in ("pC", "pq30a0.01C", "pqDC"):
+        assert len(pdd.triangulate(key, opts)["triangles"]) > 0
+    pts = np.random.default_rng(4).random((100, 2))
+    assert len(pdd.triangulate(dict(vertices=pts), "qa0.01C")["triangles"]) > 0
 
 
 def test_pdd_triangle_files_match_the_module(tmp_path):

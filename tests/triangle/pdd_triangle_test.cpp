@@ -194,6 +194,25 @@ TEST(PddTriangle, RefusesWhatItCannotDo) {
   EXPECT_FALSE(fs::exists(dir / "key.1.node")); // nothing written by a refused run
 }
 
+TEST(PddTriangle, CheckSwitchAndAnEmptyDomain) {
+  const fs::path dir = folder_with_key("pt_check");
+  const auto checked = run_in(dir, "-pq30a0.01C key.poly");
+  EXPECT_EQ(checked.code, 0) << checked.output;
+  EXPECT_NE(checked.output.find("Checked the mesh with pdd's verifier (-C)"), std::string::npos)
+      << checked.output;
+  // Triangle's box example without c: no face is enclosed by segments; Triangle 1.6 writes its
+  // eight vertices and no triangle (exit 0), pdd too, with a warning even under -Q
+  std::ofstream(dir / "box.poly") << "8 2 0 1\n1 0 0 0\n2 0 3 0\n3 3 0 0\n4 3 3 33\n5 1 1 0\n"
+                                     "6 1 2 0\n7 2 1 0\n8 2 2 0\n5 1\n1 1 2 5\n2 5 7 0\n"
+                                     "3 7 8 0\n4 8 6 10\n5 6 5 0\n1\n1 1.5 1.5\n";
+  const auto empty = run_in(dir, "-pqQ box.poly");
+  EXPECT_EQ(empty.code, 0) << empty.output;
+  EXPECT_NE(empty.output.find("warning: box.poly: the PSLG encloses no domain"), std::string::npos)
+      << empty.output;
+  EXPECT_EQ(first_line(dir / "box.1.ele"), "0 3 0");
+  EXPECT_EQ(first_line(dir / "box.1.node"), "8 2 0 1");
+}
+
 #ifndef PDD_PERMISSIVE // D and S mesh on CGAL's Mesh_2
 TEST(PddTriangle, ConformingDelaunayAndSteinerBudget) {
   const fs::path dir = folder_with_key("pt_conforming");

@@ -71,7 +71,7 @@ TEST(Switches, EveryFlag) {
 }
 
 TEST(Switches, RefusesUnsupportedSwitchesByName) {
-  for (const char c : std::string("uwWYgCohH?x7%")) {
+  for (const char c : std::string("uwWYgohH?x7%")) {
     const std::string msg = refusal(std::string("p") + c);
     EXPECT_NE(msg.find(std::string("switch -") + c), std::string::npos) << msg;
   }
@@ -79,10 +79,11 @@ TEST(Switches, RefusesUnsupportedSwitchesByName) {
   EXPECT_NE(refusal("pg").find("OFF"), std::string::npos);
   EXPECT_NE(refusal("pY").find("boundary"), std::string::npos);
   EXPECT_NE(refusal("pqYY").find("need segment splits"), std::string::npos);
-  EXPECT_NE(refusal("pk").find("supported: p r q a A c D S e v o2 Q V N E P B I O z j n, and i F l "
-                               "s L X, which pdd ignores"),
+  EXPECT_NE(refusal("pk").find("supported: p r q a A c D S e v o2 C Q V N E P B I O z j n, and i "
+                               "F l s L X, which pdd ignores"),
             std::string::npos);
-  EXPECT_NE(refusal("pC").find("pdd-verify"), std::string::npos);
+  EXPECT_TRUE(parse_switches("pqC").check) << "C runs pdd's verifier";
+  EXPECT_EQ(pdd::triangle::to_string(parse_switches("Cpq")), "pq20C");
 }
 
 TEST(Switches, ConformingDelaunayAndSteinerBudget) {

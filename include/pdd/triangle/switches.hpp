@@ -53,6 +53,10 @@ struct switches {
   bool voronoi = false;              ///< [v] the Voronoi diagram (.v.node, .v.edge)
   /// [o2] six-node (subparametric quadratic) triangles: a node at the middle of every edge
   bool second_order = false;
+  /// [C] check the mesh with pdd::verify (triangulation::check): Triangle checks its own data
+  /// structures there; pdd checks what it made (exact Delaunay or constrained Delaunay,
+  /// conformity, the domain's area, the angle and area bounds)
+  bool check = false;
   /// [i F l s L X] accepted and ignored: they choose Triangle's internal algorithms
   /// (insertion, divide-and-conquer cuts, exact arithmetic), none of which change what pdd
   /// makes; the letters as given, for -V to report.
@@ -68,7 +72,7 @@ namespace pdd::triangle {
 
 /// The switch letters parse_switches accepts, for messages and documentation.
 inline constexpr std::string_view supported_switches =
-    "p r q a A c D S e v o2 Q V N E P B I O z j n i F l s L X";
+    "p r q a A c D S e v o2 C Q V N E P B I O z j n i F l s L X";
 
 /// Parses a switch string as Triangle does: one letter per switch, in any order and any
 /// number of times; `S` takes the digits that follow it (none: 0, as Triangle reads a bare S);

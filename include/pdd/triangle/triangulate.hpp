@@ -6,9 +6,12 @@
 
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/errors.hpp>
 #include <pdd/geometry/validate.hpp>
 #include <pdd/io/previous_mesh.hpp>
 #include <pdd/mesh/region_attributes.hpp>
+#include <pdd/triangle/detail/boundary_markers.hpp>
+#include <pdd/triangle/detail/check.hpp>
 #include <pdd/triangle/detail/edge_tables.hpp>
 #include <pdd/triangle/detail/mesh_tables.hpp>
 #include <pdd/triangle/detail/point_set_mesh.hpp>
@@ -46,6 +49,36 @@ inline void finish_tables(triangulation& out, const switches& sw,
   if (sw.voronoi) out.voronoi.vertices = circumcentres(out.mesh);
   if (sw.second_order) out.second_order = add_second_order_nodes(out.mesh, nb, per_vertex, width);
   if (sw.neighbors) out.neighbors = std::move(nb);
+}
+/// What Triangle marks the output from (apply_boundary_markers): the input's vertices and
+/// vertex markers as given (before c) and, with p, its segments (Triangle reads them only then).
+inline pslg marking_input(const pslg& in, const switches& sw) {
+  pslg marks;
+  marks.vertices = in.vertices;
+  marks.vertex_markers = in.vertex_markers;
+  if (sw.poly) marks.segments = in.segments;
+  return marks;
+}
+
+/// Meshes `domain` (prepared: O and c applied) as triangulate does; a PSLG (p) that encloses no
+/// domain gives Triangle's empty mesh of `marks`' vertices (empty_triangulation).
+inline triangulation mesh_input(pslg domain, const pslg& marks, const switches& sw,
+                                const triangulate_options& o) {
+  if (!sw.poly) return triangulate_point_set(domain, sw, o);
+  try {
+    return triangulate_pslg(std::move(domain), sw, o);
+  } catch (const empty_domain_error& e) {
+    return empty_triangulation(marks, e.what());
+  }
+}
+
+/// The steps after meshing, in Triangle's order: C's check (against `checked`; null for a
+/// vertex set), the boundary markers from `marks`, then finish_tables.
+inline void finish_output(triangulation& out, const switches& sw, const pslg* checked,
+                          const pslg& marks, const vertex_attribute_interpolator* attributes) {
+  if (sw.check && !out.mesh.triangles.empty()) out.check = check_mesh(out, checked, sw);
+  apply_boundary_markers(out.mesh, marks);
+  finish_tables(out, sw, attributes);
 }
 } // namespace detail
 
@@ -88,6 +121,15 @@ inline void finish_tables(triangulation& out, const switches& sw,
 /// pipeline) a region labels its face: one run with the regional bounds as a sizing field
 /// (pdd::regional_sizing: the smallest bound among a face's region points, where Triangle
 /// takes the last), attributes per face (detail::mesh_face_regions).
+/// A PSLG that encloses no domain (pdd::empty_domain_error: no face enclosed by segments, every
+/// enclosed face eaten by hole points, all vertices collinear) gives Triangle's empty mesh: the
+/// input's vertices, no triangle, no segment, and triangulation::empty_domain says why.
+///
+/// Boundary markers are Triangle's (detail::apply_boundary_markers): a vertex keeps its nonzero
+/// input marker, else takes a nonzero marker of a segment it lies on, else 1 on the boundary of
+/// the triangulation, else 0; an edge on a segment keeps its nonzero marker, else 1 on the
+/// boundary, else 0. With C the mesh is checked by pdd::verify (triangulation::check; see
+/// detail::check_mesh) before j, o2 and the tables.
 /// \throws pdd::geometry_error for an invalid domain (after O and c), for a vertex set (or with
 ///   c a PSLG) of fewer than three distinct vertices or all collinear; everything
 ///   pdd::generate throws.
@@ -101,11 +143,20 @@ inline triangulation triangulate(pslg domain, const switches& sw,
   // the attributes' source is triangulated once the domain is validated (by the meshing)
   pslg source;
   if (domain.vertex_attribute_count > 0) source = domain;
-  triangulation out = sw.poly ? detail::triangulate_pslg(std::move(domain), sw, o)
-                              : detail::triangulate_point_set(domain, sw, o);
+  const pslg marks = detail::marking_input(domain, sw);
+  if (sw.poly) detail::prepare_pslg(domain, sw);
+  std::optional<pslg> checked;
+  if (sw.check && sw.poly) checked = domain;
+  triangulation out = detail::mesh_input(std::move(domain), marks, sw, o);
   std::optional<detail::vertex_attribute_interpolator> attributes;
-  if (source.vertex_attribute_count > 0) attributes.emplace(source, sw.poly);
-  detail::finish_tables(out, sw, attributes ? &*attributes : nullptr);
+  if (source.vertex_attribute_count > 0 && out.empty_domain.empty())
+    attributes.emplace(source, sw.poly);
+  if (source.vertex_attribute_count > 0 && !out.empty_domain.empty()) {
+    out.vertex_attributes = source.vertex_attributes; // no triangle: the input's own
+    out.vertex_attribute_count = source.vertex_attribute_count;
+  }
+  detail::finish_output(out, sw, checked ? &*checked : nullptr, marks,
+                        attributes ? &*attributes : nullptr);
   return out;
 }
 
@@ -128,7 +179,12 @@ inline triangulation refine(const previous_mesh& m, const switches& sw,
     validate(edges); // overlapping previous triangles: their edges cross
     attributes.emplace(edges, true);
   }
-  detail::finish_tables(out, sw, attributes ? &*attributes : nullptr);
+  std::optional<pslg> checked;
+  switches checks = sw;
+  checks.regional_areas = false; // the .area's bounds per previous triangle are not checked
+  if (sw.check) checked = detail::previous_domain(m);
+  detail::finish_output(out, checks, checked ? &*checked : nullptr, m.input,
+                        attributes ? &*attributes : nullptr);
   return out;
 }
 

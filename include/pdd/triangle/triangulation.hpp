@@ -4,10 +4,13 @@
 #pragma once
 
 #include <pdd/core/triangle_mesh.hpp>
+#include <pdd/mesh/verification_report.hpp>
 #include <pdd/pipeline/statistics.hpp>
 
 #include <array>
 #include <cstddef>
+#include <optional>
+#include <string>
 #include <vector>
 
 namespace pdd::triangle {
@@ -63,6 +66,15 @@ struct triangulation {
   /// Without p: {vertex, the earlier equal vertex} for every input vertex equal to an earlier
   /// one; Triangle ignores it (it is in the output, used by no triangle) with a warning.
   std::vector<std::array<index_t, 2>> duplicate_vertices;
+  /// With p, when the PSLG encloses no domain (pdd::empty_domain_error: no face enclosed by
+  /// segments, every enclosed face eaten by hole points, or all vertices collinear): why. The
+  /// mesh then has the input's vertices and no triangle and no segment, as Triangle's. Empty
+  /// otherwise.
+  std::string empty_domain;
+  /// Switch C: pdd::verify's report on the mesh (before j, o2 and the tables), against the
+  /// domain that was meshed and the switches' bounds (see pdd::triangle::triangulate); absent
+  /// without C or when the mesh is empty.
+  std::optional<verification_report> check;
 };
 
 } // namespace pdd::triangle

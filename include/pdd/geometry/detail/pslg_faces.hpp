@@ -143,13 +143,13 @@ inline void find_faces_into(const pslg& g, pslg_faces& pf) {
     build_cdt(g, pf.lt.triangulation);
   const pslg_cdt& cdt = pf.lt.triangulation.cdt;
   if (cdt.dimension() < 2)
-    throw geometry_error("the PSLG encloses no domain: all its vertices are collinear");
+    throw empty_domain_error("the PSLG encloses no domain: all its vertices are collinear");
   pf.face_in_domain.assign(label_components(cdt), 1);
   pf.face_in_domain[0] = 0;
   eat_holes(g, pf);
   if (std::find(pf.face_in_domain.begin(), pf.face_in_domain.end(), 1) == pf.face_in_domain.end())
-    throw geometry_error("the PSLG encloses no domain: no face is enclosed by segments, or hole "
-                         "points eat every enclosed face");
+    throw empty_domain_error("the PSLG encloses no domain: no face is enclosed by segments, or "
+                             "hole points eat every enclosed face");
   pf.closed_loops = degree_two && odd_nesting_agrees(pf);
 }
 

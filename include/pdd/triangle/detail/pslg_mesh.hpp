@@ -60,14 +60,19 @@ inline triangulation conforming_pslg(pslg domain, const switches& sw) {
   return conforming_mesh(std::move(domain), sw, sizing);
 }
 
-/// Meshes a PSLG as `triangle -p<sw>` would (see triangulate): without q or a its constrained
-/// Delaunay triangulation, with them pdd's pipeline, with D (or S and q or a) one
-/// triangulation (conforming_pslg); the input vertices come first in the result, in input
-/// order.
-inline triangulation triangulate_pslg(pslg domain, const switches& sw,
-                                      const triangulate_options& o) {
+/// Switches O (the hole points dropped) and c (the convex hull closed, close_convex_hull) on a
+/// PSLG before it is meshed.
+inline void prepare_pslg(pslg& domain, const switches& sw) {
   if (sw.ignore_holes) domain.holes.clear();
   if (sw.convex) close_convex_hull(domain);
+}
+
+/// Meshes a PSLG (after prepare_pslg) as `triangle -p<sw>` would (see triangulate): without q
+/// or a its constrained Delaunay triangulation, with them pdd's pipeline, with D (or S and q
+/// or a) one triangulation (conforming_pslg); the input vertices come first in the result, in
+/// input order.
+inline triangulation triangulate_pslg(pslg domain, const switches& sw,
+                                      const triangulate_options& o) {
   if (conforming_path(sw)) return conforming_pslg(std::move(domain), sw);
   if (!sw.quality) return constrained_delaunay(std::move(domain), sw); // no Steiner point
   const bool closed_loops = has_closed_loops(domain);                  // validates

@@ -37,8 +37,6 @@ inline constexpr refused_switches refusal_reasons[] = {
           "bound and D's Delaunay property are met next to segments; without splits neither "
           "holds, nor does refinement end)"},
     {"g", " (OFF output for Geomview) is not supported"},
-    {"C", " (Triangle's check of its own data structures) is not supported: pdd-verify checks "
-          "a mesh (exact Delaunay, conformity, the angle and area bounds)"},
     {"hH?", " (help) is not a meshing switch; run pdd-triangle --help"},
 };
 
@@ -47,8 +45,8 @@ inline std::string refusal(char c) {
   const std::string sw = std::string("switch -") + c;
   for (const refused_switches& r : refusal_reasons)
     if (r.letters.find(c) != std::string_view::npos) return sw + std::string(r.reason);
-  return sw + " is not a Triangle switch pdd supports (supported: p r q a A c D S e v o2 Q V N E "
-              "P B I O z j n, and i F l s L X, which pdd ignores)";
+  return sw + " is not a Triangle switch pdd supports (supported: p r q a A c D S e v o2 C Q V N "
+              "E P B I O z j n, and i F l s L X, which pdd ignores)";
 }
 
 /// The count after `S` at position i (digits only; none: 0, as Triangle reads a bare S);
@@ -126,6 +124,7 @@ inline constexpr flag_switch flag_switches[] = {
     {'z', &switches::zero_based},
     {'j', &switches::jettison},
     {'n', &switches::neighbors},
+    {'C', &switches::check},
 };
 
 /// Sets the flag of a letter without a number (V counts; i F l s L X are kept in
@@ -183,6 +182,7 @@ inline std::string format_switches(const switches& s) {
   flag(s.edges, 'e');
   flag(s.voronoi, 'v');
   if (s.second_order) out += "o2";
+  flag(s.check, 'C');
   return out + s.ignored;
 }
 
