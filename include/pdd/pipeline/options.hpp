@@ -73,7 +73,9 @@ enum class geometric_mesh_field {
 struct decoupling_path_options {
   /// Multiplies the decoupling parameter k of Theorem 15 (in (0, 1] keeps the guarantee).
   double k_scale = 1.0;
-  /// > 0: use this k instead (experiments; see decoupling_options::k_override).
+  /// > 0: use this k instead (experiments, and pdd::triangle::triangulate's strips of a vertex
+  /// set, whose separators hold no vertex in their pieces' disks; see
+  /// decoupling_options::k_override).
   double k_override = 0.0;
   /// Invariance repair rounds (see mesh_subdomains; the theory says none are ever needed).
   unsigned max_repairs = 3;
