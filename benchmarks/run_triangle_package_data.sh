@@ -66,6 +66,7 @@ for t in (r for r in runs if r["program"].startswith("Triangle")):
     ok = abs(d) <= max(12, 0.15 * t["triangles"])
     print("| %s | `-%s` | %d | %d | %+d (%+.1f %%) | %s | %.2f | %.2f |" % (
         t["input"], t["switches"], t["triangles"], p["triangles"], d,
-        100.0 * d / t["triangles"], "yes" if ok else "**no**", t["wall_seconds"],
+        100.0 * d / t["triangles"] if t["triangles"] else 0.0, "yes" if ok else "**no**",
+        t["wall_seconds"],
         p["wall_seconds"]))
 PY
