@@ -154,7 +154,8 @@ inline pslg strip_pslg(const pslg& g, const std::vector<index_t>& local,
 
 /// The hull PSLG g of the vertex set `in` (its vertex k is input vertex dv.kept[k]) meshed:
 /// in strips (strip_count > 1; when strip_separators finds no path for some cut, half as many
-/// strips, down to 2; a decomposition or decoupling failure falls back to the whole hull),
+/// strips, down to 2; a decomposition or decoupling failure, or strips that are no valid PSLG
+/// (an end's perpendicular crossing a path, not seen), fall back to the whole hull),
 /// else whole by triangulate_pslg. The cut ends follow the distinct input vertices in the
 /// result's vertices, as Steiner vertices.
 inline triangulation mesh_hull(pslg g, const pslg& in, const distinct_vertices& dv,
@@ -171,6 +172,7 @@ inline triangulation mesh_hull(pslg g, const pslg& in, const distinct_vertices& 
                          sw, o);
     } catch (const decomposition_error&) {
     } catch (const decoupling_error&) {
+    } catch (const geometry_error&) { // an end's perpendicular crossing a path: no strips
     }
   }
   return triangulate_pslg(std::move(g), sw, o);

@@ -149,8 +149,15 @@ inline std::size_t end_at(const strip_search& s, const cut_task& t, index_t a, i
   return static_cast<std::size_t>(-1);
 }
 
+/// Whether no vertex repeats on a path.
+inline bool simple_path(std::vector<index_t> path) {
+  std::sort(path.begin(), path.end());
+  return std::adjacent_find(path.begin(), path.end()) == path.end();
+}
+
 /// The cheapest path of Gabriel edges from a cut end on side 0 to one on side 1 (through
-/// their vertices) under path_step_ok, by Dijkstra on directed edges; no vertices when none.
+/// their vertices) under path_step_ok, by Dijkstra on directed edges (a path that would visit a
+/// vertex twice is dropped); no vertices when none.
 inline cut_path_result cut_path(strip_search& s, const cut_task& t, double min_angle) {
   using entry = std::pair<double, std::size_t>;
   std::priority_queue<entry, std::vector<entry>, std::greater<>> queue;
@@ -175,10 +182,12 @@ inline cut_path_result cut_path(strip_search& s, const cut_task& t, double min_a
     if (c > s.cost[e]) continue;
     const index_t a = s.tail[e], w = edge_head(s, e);
     const std::size_t j = end_at(s, t, a, w, min_angle);
-    if (j != static_cast<std::size_t>(-1))
-      r = trace_path(s, t, e, j);
-    else
+    if (j == static_cast<std::size_t>(-1)) {
       relax(s.v[a], w, c, e);
+    } else {
+      r = trace_path(s, t, e, j);
+      if (!simple_path(r.vertices)) r.vertices.clear(); // labels per edge allow a loop
+    }
   }
   for (const std::size_t e : s.touched)
     s.cost[e] = std::numeric_limits<double>::infinity();
