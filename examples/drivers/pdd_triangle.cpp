@@ -111,7 +111,11 @@ void report_meshing(const pdd::triangle::triangulation& t, const pdd::triangle::
   for (const auto& r : t.runs)
     n += r.subdomains;
   std::printf("Mesh milliseconds:  %.0f (%zu subdomain(s))\n\n", ms, n);
-  if (t.runs.front().general_domain)
+  if (t.strips > 1)
+    std::printf("The vertex set's hull was decoupled into %zu strips, their separators through "
+                "the vertices.\n",
+                t.strips);
+  else if (t.runs.front().general_domain)
     std::printf("The domain is not one of closed loops (internal or dangling segments, "
                 "isolated vertices, touching loops or internal boundaries): %s.\n",
                 n > 1 ? "decoupled from its faces, the segments between faces as interfaces"

@@ -106,6 +106,7 @@ TEST(PointSetStrips, LargeVertexSetsAreDecoupledAndVerified) {
     const tri::triangulation strips = tri::triangulate(g, tri::parse_switches("qa0.00002"));
     ASSERT_EQ(strips.runs.size(), 1u);
     EXPECT_GE(strips.runs[0].subdomains, 2u) << what << ": not decoupled";
+    EXPECT_EQ(strips.strips, strips.runs[0].subdomains) << what;
     expect_verified(strips, 0.00002, what);
     for (std::size_t i = 0; i < g.vertices.size(); ++i)
       ASSERT_EQ(strips.mesh.vertices[i], g.vertices[i]) << what << ": Triangle's numbering";

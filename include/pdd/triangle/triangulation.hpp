@@ -71,6 +71,10 @@ struct triangulation {
   /// mesh then has the input's vertices and no triangle and no segment, as Triangle's. Empty
   /// otherwise.
   std::string empty_domain;
+  /// Without p, with q or a: the strips the vertex set's hull was decoupled into, their
+  /// separators through the vertices (triangle/detail/point_set_strips.hpp); 0 when it was not
+  /// (meshed whole, or split by MADD: runs says how many subdomains).
+  std::size_t strips = 0;
   /// Switch C: pdd::verify's report on the mesh (before j, o2 and the tables), against the
   /// domain that was meshed and the switches' bounds (see pdd::triangle::triangulate); absent
   /// without C or when the mesh is empty.

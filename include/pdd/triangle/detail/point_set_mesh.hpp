@@ -110,6 +110,7 @@ inline triangulation mesh_strips(pslg strips, std::size_t n, const switches& sw,
   out.runs.push_back(std::move(r.statistics));
   if (sw.regional_attributes) out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
   input_vertices_first(out.mesh, strips);
+  out.strips = n;
   return out;
 }
 
