@@ -56,7 +56,9 @@ pdd::test::command_result threaded(const std::string& options, const fs::path& o
 }
 
 /// The job of mpi_command started in a session of its own, its launcher (mpiexec), or with
-/// `one_rank` the last-started of its pdd-mesh-mpi ranks, killed with SIGKILL after `seconds`;
+/// `one_rank` the last-started of its pdd-mesh-mpi ranks, killed with SIGKILL after `seconds`
+/// (negative: as soon as the first piece file is in `out`, polled every 10 ms for at most 60 s,
+/// which does not depend on how loaded the machine is);
 /// then the job is given 10 s to end by itself, and is killed (by the session's id) if it has
 /// not, so that nothing writes into `out` afterwards. Returns the shell's report ("the job
 /// outlived the kill" when it had to be killed).
@@ -64,10 +66,15 @@ std::string killed_job(int ranks, const std::string& options, const fs::path& ou
                        bool one_rank = false) {
   char sleep[64];
   std::snprintf(sleep, sizeof sleep, "sleep %.3f; ", seconds);
+  const std::string wait =
+      seconds >= 0.0
+          ? std::string(sleep)
+          : "for i in $(seq 6000); do ls " + quoted(out) +
+                " 2>/dev/null | grep -q '^subdomain_.*[.]vtu$' && break; sleep 0.01; done; ";
   const std::string victim =
       one_rank ? "$(pgrep -s $p -f pdd-mesh-mpi | tail -n 1)" : std::string("$p");
   const std::string script = "setsid " + mpi_command(ranks, options, out) +
-                             " >/dev/null 2>&1 & p=$!; " + sleep + "kill -KILL " + victim +
+                             " >/dev/null 2>&1 & p=$!; " + wait + "kill -KILL " + victim +
                              "; for i in $(seq 100); do pgrep -s $p >/dev/null || "
                              "exit 0; sleep 0.1; done; pkill -KILL -s $p; echo the job outlived "
                              "the kill";
@@ -149,8 +156,9 @@ TEST(MpiResume, EitherProgramResumesTheOthersDirectory) {
   EXPECT_EQ(expect_same_files(clean, by_mpi, "pdd-mesh-mpi's, resumed by pdd-mesh"), 16u + 2u);
 }
 
-// The launcher killed with SIGKILL at 3 fixed-seed moments between 25 and 75 % of a clean run's
-// wall time (kill_options on 3 ranks), then --resume on 3 ranks: the directory
+// The launcher killed with SIGKILL as soon as the first piece is written, at 10 % of a clean
+// run's wall time and at a fixed-seed moment between 25 and 75 % of it (kill_options on 3
+// ranks; moments alone failed on a loaded machine), then --resume on 3 ranks: the directory
 // equals the clean run's, every file; some killed job left pieces that were kept, and some was
 // interrupted (pieces meshed on resume). Open MPI's ranks notice the launcher's death and end by
 // themselves within about 2 s (a late kill may let them finish the job first).
@@ -167,9 +175,12 @@ TEST(MpiResume, AJobWhoseLauncherIsKilledResumesToACleanRun) {
   for (int run = 0; run < 3; ++run) {
     const fs::path out = root / ("run" + std::to_string(run));
     const fs::path stats = root / ("run" + std::to_string(run) + ".json");
-    const double t = moment(random);
+    // run 0 after the first piece (some piece is kept), run 1 early (the ranks, which end
+    // within about 2 s of the launcher, are left pieces to mesh), run 2 at random
+    const double t = run == 0 ? -1.0 : run == 1 ? 0.1 * wall.count() : moment(random);
     const std::string report = killed_job(3, options, out, t);
-    const std::string what = "killed at " + std::to_string(t) + " s";
+    const std::string what = t < 0 ? std::string("killed after the first piece")
+                                   : "killed at " + std::to_string(t) + " s";
     const bool finished = fs::exists(out / "mesh.pvtu");
     const auto r = mpi(3, options + " --resume --stats " + quoted(stats), out);
     ASSERT_EQ(r.code, 0) << what << ":\n" << r.output;
@@ -188,8 +199,9 @@ TEST(MpiResume, AJobWhoseLauncherIsKilledResumesToACleanRun) {
   EXPECT_GT(meshed, 0u) << "no killed job was interrupted";
 }
 
-// One rank (a pdd-mesh-mpi process, not the launcher) killed with SIGKILL at 2 fixed-seed moments
-// between 30 and 70 % of a clean run's wall time: the job ends (Open MPI aborts it), and
+// One rank (a pdd-mesh-mpi process, not the launcher) killed with SIGKILL as soon as the first
+// piece is written and at a fixed-seed moment between 30 and 70 % of a clean run's wall time:
+// the job ends (Open MPI aborts it), and
 // --resume on 3 ranks gives the clean run's directory; some kill interrupted the job.
 TEST(MpiResume, AJobWithOneRankKilledResumesToACleanRun) {
   const fs::path root = pdd::test::fresh_dir("mpi_resume_rank_killed");
@@ -204,9 +216,11 @@ TEST(MpiResume, AJobWithOneRankKilledResumesToACleanRun) {
   for (int run = 0; run < 2; ++run) {
     const fs::path out = root / ("run" + std::to_string(run));
     const fs::path stats = root / ("run" + std::to_string(run) + ".json");
-    const double t = moment(random);
+    const double t = run == 0 ? -1.0 : moment(random); // run 0: after the first piece
     const std::string report = killed_job(3, options, out, t, true);
-    const std::string what = "one rank killed at " + std::to_string(t) + " s " + report;
+    const std::string what = (t < 0 ? std::string("one rank killed after the first piece")
+                                    : "one rank killed at " + std::to_string(t) + " s") +
+                             " " + report;
     const auto r = mpi(3, options + " --resume --stats " + quoted(stats), out);
     ASSERT_EQ(r.code, 0) << what << ":\n" << r.output;
     EXPECT_EQ(expect_same_files(clean, out, what), 32u + 2u) << what;
