@@ -10,6 +10,7 @@
 // NAME.node. Every other switch is refused by name, with the reason.
 // Exit codes: 0 ok, 1 bad input, 2 usage (an unsupported switch), 3 the check of -C failed (the
 // files are written), 4 internal error, 5 an input beyond double precision.
+#include "exit_code.hpp"
 #include "version_flag.hpp"
 
 #include <pdd/errors.hpp>
@@ -34,8 +35,12 @@
 
 namespace {
 
-constexpr int ok = 0, bad_input = 1, usage = 2, verification_failed = 3, internal = 4,
-              unresolvable = 5;
+using pdd::drivers::bad_input;
+using pdd::drivers::internal;
+using pdd::drivers::ok;
+using pdd::drivers::unresolvable;
+using pdd::drivers::usage;
+using pdd::drivers::verification_failed;
 
 struct cli_options {
   std::string input;

@@ -103,12 +103,8 @@ inline triangulation mesh_strips(pslg strips, std::size_t n, const switches& sw,
   generate_options gopt = options_for(sw, o);
   gopt.subdomains = n;
   gopt.decoupling.k_override = 0.5 * std::sqrt(gopt.criteria.max_area / std::numbers::sqrt2);
-  generate_result r = generate(strips, gopt);
-  triangulation out;
-  out.mesh = std::move(r.mesh);
+  triangulation out = generated(strips, gopt, sw);
   std::erase_if(out.mesh.segments, [](const mesh_edge& e) { return e.marker == 0; });
-  out.runs.push_back(std::move(r.statistics));
-  if (sw.regional_attributes) out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
   input_vertices_first(out.mesh, strips);
   out.strips = n;
   return out;

@@ -67,6 +67,18 @@ inline void prepare_pslg(pslg& domain, const switches& sw) {
   if (sw.convex) close_convex_hull(domain);
 }
 
+/// One pdd::generate run of `domain` as a triangulation: the mesh, the run's statistics and,
+/// with A, every triangle's attribute 0 (no region). Its vertices are the generator's order.
+inline triangulation generated(const pslg& domain, const generate_options& gopt,
+                               const switches& sw) {
+  generate_result r = generate(domain, gopt);
+  triangulation out;
+  out.mesh = std::move(r.mesh);
+  out.runs.push_back(std::move(r.statistics));
+  if (sw.regional_attributes) out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
+  return out;
+}
+
 /// Meshes a PSLG (after prepare_pslg) as `triangle -p<sw>` would (see triangulate): without q
 /// or a its constrained Delaunay triangulation, with them pdd's pipeline, with D (or S and q
 /// or a) one triangulation (conforming_pslg); the input vertices come first in the result, in
@@ -84,10 +96,7 @@ inline triangulation triangulate_pslg(pslg domain, const switches& sw,
   } else if (regional) {
     mesh_regions(domain, sw, gopt, out);
   } else {
-    generate_result r = generate(domain, gopt);
-    out.mesh = std::move(r.mesh);
-    out.runs.push_back(std::move(r.statistics));
-    if (sw.regional_attributes) out.triangle_attributes.assign(out.mesh.triangles.size(), 0.0);
+    out = generated(domain, gopt, sw);
   }
   input_vertices_first(out.mesh, domain);
   return out;
