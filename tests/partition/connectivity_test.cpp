@@ -142,6 +142,19 @@ TEST(ConnectedBisection, GrowthFallbackIsBalancedOnAPath) {
   EXPECT_LE(std::max(w[0], w[1]), 0.55 * 101);
 }
 
+// The growth fallback grows part 1 to its share: a third of a path for part 0, connected.
+TEST(ConnectedBisection, GrowthFallbackTakesUnevenShares) {
+  const partition_graph g = path_graph(99);
+  for (const double share : {1.0 / 3.0, 2.0 / 3.0}) {
+    const auto part = pdd::connected_bisection(
+        g, one_part_partitioner{}, {.max_part_fraction = 0.52, .target_fraction = share});
+    EXPECT_EQ(pdd::cut_weight(g, part), 1.0) << share;
+    const auto w = pdd::part_weights(g, part);
+    EXPECT_LE(w[0], 1.04 * share * 99) << share;
+    EXPECT_LE(w[1], 1.04 * (1.0 - share) * 99) << share;
+  }
+}
+
 TEST(ConnectedBisection, SmallestGraphs) {
   partition_graph two = with_vertices(2);
   add(two, 0, 1);

@@ -91,7 +91,8 @@ TEST(Refinement, FmNeverWorsensAndOftenImproves) {
   int improved = 0;
   for (std::uint64_t seed = 0; seed < 40; ++seed) {
     const ml_graph g = to_ml_graph(random_holey_grid(seed));
-    const double max_weight = 0.55 * total_vertex_weight(g);
+    const double bound = 0.55 * total_vertex_weight(g);
+    const part_limits max_weight{bound, bound};
     std::mt19937_64 rng(seed);
     std::vector<std::uint8_t> part(boost::num_vertices(g));
     for (auto& p : part)
@@ -118,7 +119,11 @@ TEST(ExactBisection, MatchesAnIndependentEnumeration) {
       add(g, rng() % n, rng() % n, weight(rng));
     const double fraction = trial % 2 ? 0.55 : 0.7;
     const ml_graph mg = to_ml_graph(g);
-    const double max_weight = fraction * total_vertex_weight(mg);
+    // even shares, and (every third trial) part 0 a third of the weight
+    const double share = trial % 3 == 0 ? 1.0 / 3.0 : 0.5;
+    const part_limits max_weight = part_weight_limits(
+        pdd::bisection_options{.max_part_fraction = fraction, .target_fraction = share},
+        total_vertex_weight(mg));
     const auto part = exact_bisection(mg, max_weight);
     bisection_score best{1e300, 1e300};
     for (std::uint32_t mask = 1; mask + 1 < (1U << n); ++mask) {
@@ -131,7 +136,9 @@ TEST(ExactBisection, MatchesAnIndependentEnumeration) {
     const bisection_score got = score_bisection(mg, part, max_weight);
     EXPECT_NEAR(got.excess, best.excess, 1e-12) << trial;
     EXPECT_NEAR(got.cut, best.cut, 1e-12) << trial;
-    EXPECT_EQ(part[0], 0);
+    if (share == 0.5) {
+      EXPECT_EQ(part[0], 0);
+    }
   }
 }
 
@@ -139,7 +146,8 @@ TEST(InitialBisection, GrowingCoversOneSideAndStaysNonEmpty) {
   const ml_graph g = to_ml_graph(grid_graph(10, 7));
   const double total = total_vertex_weight(g);
   for (std::size_t seed_vertex : {0, 31, 69}) {
-    const auto grown = grow_bisection(g, seed_vertex, 0.5 * total, 0.55 * total);
+    const auto grown =
+        grow_bisection(g, seed_vertex, 0.5 * total, part_limits{0.55 * total, 0.55 * total});
     const auto w = ml_part_weights(g, grown);
     EXPECT_GE(w[1], 0.5 * total);
     EXPECT_LE(w[1], 0.55 * total);
@@ -148,8 +156,14 @@ TEST(InitialBisection, GrowingCoversOneSideAndStaysNonEmpty) {
     EXPECT_GE(ml_part_weights(g, bfs)[1], 0.5 * total);
   }
   std::mt19937_64 rng(3);
-  const auto part = initial_bisection(g, 0.55 * total, 8, 8, rng);
+  const auto part = initial_bisection(g, part_limits{0.55 * total, 0.55 * total}, 8, 8, rng);
   EXPECT_EQ(ml_cut(g, part), 7.0); // a straight cut across the short side
+  // part 1 two thirds of the weight: still a straight cut across, at column 3 or 4 of 10
+  const part_limits third =
+      part_weight_limits(pdd::bisection_options{.target_fraction = 0.3}, total);
+  const auto uneven = initial_bisection(g, third, 8, 8, rng);
+  EXPECT_EQ(ml_cut(g, uneven), 7.0);
+  EXPECT_NEAR(ml_part_weights(g, uneven)[0], 0.3 * total, 0.05 * total);
 }
 
 TEST(Randomness, PermutationsArePortableAndComplete) {

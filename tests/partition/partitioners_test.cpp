@@ -121,6 +121,25 @@ TYPED_TEST(Partitioner, BalanceHoldsOnRandomGraphs) {
   }
 }
 
+// Uneven shares (MADD's splits into an odd number of subdomains): part p weighs at most
+// 2 max_part_fraction times its share, on random graphs, for either part the smaller.
+TYPED_TEST(Partitioner, UnevenSharesHoldOnRandomGraphs) {
+  for (std::uint64_t seed = 0; seed < 20; ++seed) {
+    const partition_graph g = random_holey_grid(seed);
+    for (const double share : {1.0 / 3.0, 0.4, 0.6, 2.0 / 3.0}) {
+      const pdd::bisection_options o{
+          .max_part_fraction = 0.52, .seed = seed, .target_fraction = share};
+      const auto w = pdd::part_weights(g, TypeParam{}.bisect(g, o));
+      const double total = w[0] + w[1], bound = 2.0 * 0.52 * (1 + 1e-12);
+      EXPECT_LE(w[0], bound * share * total) << seed << " " << share;
+      EXPECT_LE(w[1], bound * (1.0 - share) * total) << seed << " " << share;
+    }
+  }
+  const partition_graph g = grid_graph(12, 12);
+  for (const double bad : {0.0, 1.0, -0.2, std::numeric_limits<double>::quiet_NaN()})
+    EXPECT_THROW(TypeParam{}.bisect(g, {.target_fraction = bad}), pdd::decomposition_error) << bad;
+}
+
 TYPED_TEST(Partitioner, SameSeedSameBisection) {
   for (std::uint64_t seed = 0; seed < 10; ++seed) {
     const partition_graph g = random_holey_grid(100 + seed);

@@ -24,9 +24,9 @@
 #pragma once
 
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/errors.hpp>
 #include <pdd/partition/detail/csr.hpp>
 #include <pdd/partition/detail/multilevel.hpp>
-#include <pdd/errors.hpp>
 
 #include <cstddef>
 #include <cstdint>
@@ -60,9 +60,10 @@ struct boost_partitioner {
       throw decomposition_error("boost_partitioner: coarsen_to must be >= 2, initial_tries >= 1, "
                                 "refinement_passes >= 0 and trials >= 1");
     const detail::ml_graph mg = detail::to_ml_graph(g);
-    const double max_weight = o.max_part_fraction * detail::total_vertex_weight(mg);
+    const detail::part_limits limits =
+        detail::part_weight_limits(o, detail::total_vertex_weight(mg));
     const detail::multilevel_parameters p{coarsen_to, initial_tries, refinement_passes, trials};
-    return detail::multilevel_bisection(mg, max_weight, p, o.seed);
+    return detail::multilevel_bisection(mg, limits, p, o.seed);
   }
 };
 static_assert(GraphPartitioner<boost_partitioner>);

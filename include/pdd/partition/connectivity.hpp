@@ -32,11 +32,11 @@ namespace pdd {
 /// part keep its heaviest connected component and moving the stray components to the other
 /// part (which lowers the cut: a stray component's edges all lead to the other part), in both
 /// orders (part 0 first, part 1 first; skipped when p left a part empty); and three connected
-/// growths up to half the weight (BFS from a pseudo-peripheral vertex, greedy graph growing
-/// from it and from the far end of its BFS), repaired likewise. Each candidate is then
+/// growths up to part 1's share of the weight (BFS from a pseudo-peripheral vertex, greedy graph
+/// growing from it and from the far end of its BFS), repaired likewise. Each candidate is then
 /// rebalanced and its cut lowered greedily by moving boundary vertices that are not
 /// articulation points of their part (both parts stay connected). The candidate with the
-/// smallest excess over o.max_part_fraction of the total weight, then the smallest cut, wins
+/// smallest excess over the parts' limits (bisection_options), then the smallest cut, wins
 /// (the first on ties). All-zero vertex weights count as ones.
 /// \tparam P a GraphPartitioner.
 /// \pre g is connected and has at least two vertices.
@@ -70,7 +70,7 @@ std::vector<std::uint8_t> connected_bisection(const partition_graph& g, const P&
   double total = 0.0;
   for (const double w : weight)
     total += w;
-  return detail::repaired_bisection(g, raw, weight, o.max_part_fraction * total);
+  return detail::repaired_bisection(g, raw, weight, detail::part_weight_limits(o, total));
 }
 
 } // namespace pdd

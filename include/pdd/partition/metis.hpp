@@ -7,16 +7,17 @@
 #ifdef PDD_HAVE_METIS
 
 #include <pdd/concepts/graph_partitioner.hpp>
+#include <pdd/errors.hpp>
 #include <pdd/partition/detail/csr.hpp>
 #include <pdd/partition/detail/exact.hpp>
 #include <pdd/partition/detail/fm.hpp>
 #include <pdd/partition/detail/metis_input.hpp>
 #include <pdd/partition/detail/multilevel.hpp>
-#include <pdd/errors.hpp>
 
 #include <metis.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <mutex>
@@ -45,7 +46,8 @@ inline std::mutex& metis_mutex() {
 /// Models GraphPartitioner with METIS. Parallel edges count with their summed weight; self loops
 /// are ignored. Real weights are scaled to METIS's 32-bit integers (each total to 2^29, every
 /// positive weight to at least 1; zero edge weights become 1 since METIS needs positive edge
-/// weights); METIS's imbalance bound is 2 max_part_fraction; the result is then polished by FM
+/// weights); METIS's target part weights are target_fraction and the rest, its imbalance bound
+/// 2 max_part_fraction; the result is then polished by FM
 /// passes on the real weights, which only lower (excess over the bound, cut). Graphs of at most
 /// 12 vertices are bisected exactly by enumeration instead (optimal, and clear of METIS's
 /// corner cases on tiny graphs).
@@ -72,14 +74,15 @@ struct metis_partitioner {
     detail::check_bisection_options(o);
     if (ncuts < 1) throw decomposition_error("metis_partitioner: ncuts must be >= 1");
     const detail::ml_graph mg = detail::to_ml_graph(g);
-    const double max_weight = o.max_part_fraction * detail::total_vertex_weight(mg);
+    const detail::part_limits limits =
+        detail::part_weight_limits(o, detail::total_vertex_weight(mg));
     if (boost::num_vertices(mg) <= detail::exact_bisection_max_vertices)
-      return detail::exact_bisection(mg, max_weight);
+      return detail::exact_bisection(mg, limits);
     std::vector<std::uint8_t> part = run_metis(mg, o);
     const std::size_t ones = std::count(part.begin(), part.end(), std::uint8_t{1});
     if (ones == 0 || ones == part.size()) // METIS left a part empty: bisect without it
-      return detail::multilevel_bisection(mg, max_weight, detail::multilevel_parameters{}, o.seed);
-    detail::fm_refine(mg, part, max_weight, 8);
+      return detail::multilevel_bisection(mg, limits, detail::multilevel_parameters{}, o.seed);
+    detail::fm_refine(mg, part, limits, 8);
     return part;
   }
 
@@ -89,6 +92,8 @@ private:
     detail::metis_input<idx_t> in = detail::to_metis_input<idx_t>(mg);
     idx_t nvtxs = static_cast<idx_t>(boost::num_vertices(mg)), ncon = 1, nparts = 2, cut = 0;
     real_t ubvec = static_cast<real_t>(std::max(2.0 * o.max_part_fraction, 1.001));
+    std::array<real_t, 2> tpwgts{static_cast<real_t>(o.target_fraction),
+                                 static_cast<real_t>(1.0 - o.target_fraction)};
     idx_t options[METIS_NOPTIONS];
     METIS_SetDefaultOptions(options);
     options[METIS_OPTION_SEED] = static_cast<idx_t>((o.seed ^ (o.seed >> 31)) & 0x7fffffffU);
@@ -100,7 +105,7 @@ private:
       const std::lock_guard<std::mutex> lock(detail::metis_mutex());
       auto* entry = scheme == metis_scheme::kway ? &METIS_PartGraphKway : &METIS_PartGraphRecursive;
       status = entry(&nvtxs, &ncon, in.xadj.data(), in.adjncy.data(), in.vwgt.data(), nullptr,
-                     in.adjwgt.data(), &nparts, nullptr, &ubvec, options, &cut, part.data());
+                     in.adjwgt.data(), &nparts, tpwgts.data(), &ubvec, options, &cut, part.data());
     }
     if (status == METIS_ERROR_MEMORY) throw std::bad_alloc();
     if (status != METIS_OK)

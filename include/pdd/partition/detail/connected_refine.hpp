@@ -36,21 +36,21 @@ inline std::vector<char> part_articulation_points(const partition_graph& g,
   return flags;
 }
 
-/// The move a connected refinement step makes: while the heavier part exceeds max_weight, the
+/// The move a connected refinement step makes: while a part exceeds its limit, the
 /// movable vertex whose move lowers the excess with the largest cut gain; else the movable
 /// vertex with the largest positive gain whose move keeps the bisection balanced. Ties: lowest
 /// vertex. O(n + m).
 inline std::optional<std::size_t> connected_move(const partition_graph& g,
                                                  const std::vector<std::uint8_t>& part,
                                                  const std::vector<double>& weight,
-                                                 double max_weight) {
+                                                 const part_limits& limits) {
   const std::array<std::vector<char>, 2> articulation{part_articulation_points(g, part, 0),
                                                       part_articulation_points(g, part, 1)};
   std::array<double, 2> w{0.0, 0.0};
   std::array<std::size_t, 2> count{0, 0};
   for (std::size_t v = 0; v < part.size(); ++v)
     w[part[v]] += weight[v], ++count[part[v]];
-  const double excess = balance_excess(w, max_weight);
+  const double excess = balance_excess(w, limits);
   std::optional<std::size_t> best;
   double best_gain = 0.0;
   for (std::size_t v = 0; v < part.size(); ++v) {
@@ -67,7 +67,7 @@ inline std::optional<std::size_t> connected_move(const partition_graph& g,
     std::array<double, 2> after = w;
     after[s] -= weight[v];
     after[1 - s] += weight[v];
-    const double excess_after = balance_excess(after, max_weight);
+    const double excess_after = balance_excess(after, limits);
     const bool allowed = excess > 0.0 ? excess_after < excess : excess_after == 0.0 && gain > 0.0;
     if (boundary && allowed && (!best || gain > best_gain)) best = v, best_gain = gain;
   }
@@ -78,10 +78,10 @@ inline std::optional<std::size_t> connected_move(const partition_graph& g,
 /// connected; the excess never grows, and once balanced the cut only falls.
 /// \pre both parts non-empty and connected. O(moves (n + m)).
 inline void connected_refine(const partition_graph& g, std::vector<std::uint8_t>& part,
-                             const std::vector<double>& weight, double max_weight,
+                             const std::vector<double>& weight, const part_limits& limits,
                              std::size_t max_moves) {
   for (std::size_t moves = 0; moves < max_moves; ++moves) {
-    const std::optional<std::size_t> v = connected_move(g, part, weight, max_weight);
+    const std::optional<std::size_t> v = connected_move(g, part, weight, limits);
     if (!v) return;
     part[*v] ^= 1U;
   }

@@ -66,11 +66,15 @@ inline ml_graph make_ml_graph(std::size_t n, std::vector<weighted_arc> arcs,
   return g;
 }
 
-/// Throws decomposition_error unless 0.5 <= o.max_part_fraction <= 1.
+/// Throws decomposition_error unless 0.5 <= o.max_part_fraction <= 1 and 0 < o.target_fraction
+/// < 1.
 inline void check_bisection_options(const bisection_options& o) {
   if (!(o.max_part_fraction >= 0.5 && o.max_part_fraction <= 1.0))
     throw decomposition_error("bisection_options::max_part_fraction must lie in [0.5, 1], got " +
                               std::to_string(o.max_part_fraction));
+  if (!(o.target_fraction > 0.0 && o.target_fraction < 1.0))
+    throw decomposition_error("bisection_options::target_fraction must lie in (0, 1), got " +
+                              std::to_string(o.target_fraction));
 }
 
 inline void check_weight(double w, const std::string& what) {
@@ -125,8 +129,25 @@ struct bisection_score {
   }
 };
 
-inline double balance_excess(const std::array<double, 2>& w, double max_weight) {
-  return std::max(0.0, std::max(w[0], w[1]) - max_weight);
+/// The most each part of a bisection may weigh: part p at most 2 max_part_fraction times its
+/// share of the total (target_fraction for part 0, the rest for part 1); for even shares,
+/// max_part_fraction of the total each.
+using part_limits = std::array<double, 2>;
+
+/// The part_limits of o for a graph of total vertex weight `total`.
+inline part_limits part_weight_limits(const bisection_options& o, double total) {
+  const double bound = 2.0 * o.max_part_fraction * total;
+  return {bound * o.target_fraction, bound * (1.0 - o.target_fraction)};
+}
+
+/// The weight part 1 is meant to take (its share of `total`), from its limits.
+inline double part1_target(const part_limits& limits, double total) {
+  return total * limits[1] / (limits[0] + limits[1]);
+}
+
+/// By how much the parts of weights w exceed their limits (the larger excess; 0 if none does).
+inline double balance_excess(const std::array<double, 2>& w, const part_limits& limits) {
+  return std::max({0.0, w[0] - limits[0], w[1] - limits[1]});
 }
 
 inline std::array<double, 2> ml_part_weights(const ml_graph& g,
@@ -147,8 +168,8 @@ inline double ml_cut(const ml_graph& g, const std::vector<std::uint8_t>& part) {
 }
 
 inline bisection_score score_bisection(const ml_graph& g, const std::vector<std::uint8_t>& part,
-                                       double max_weight) {
-  return {balance_excess(ml_part_weights(g, part), max_weight), ml_cut(g, part)};
+                                       const part_limits& limits) {
+  return {balance_excess(ml_part_weights(g, part), limits), ml_cut(g, part)};
 }
 
 /// SplitMix64 mix of a seed and a stream number: independent generator seeds per stream.

@@ -31,8 +31,8 @@ struct fm_gain_order {
 /// (excess, cut) and rolls back to the best prefix. O((n + m) log n).
 class fm_pass {
 public:
-  fm_pass(const ml_graph& g, std::vector<std::uint8_t>& part, double max_weight)
-      : g_(g), part_(part), max_weight_(max_weight), gain_(boost::num_vertices(g), 0.0),
+  fm_pass(const ml_graph& g, std::vector<std::uint8_t>& part, const part_limits& limits)
+      : g_(g), part_(part), limits_(limits), gain_(boost::num_vertices(g), 0.0),
         locked_(boost::num_vertices(g), 0) {
     cut_ = ml_cut(g, part);
     for (std::size_t v = 0; v < boost::num_vertices(g); ++v) {
@@ -46,7 +46,7 @@ public:
   }
 
   void run(std::size_t stall_limit) {
-    bisection_score best{balance_excess(w_, max_weight_), cut_};
+    bisection_score best{balance_excess(w_, limits_), cut_};
     std::size_t best_length = 0, stalled = 0;
     while (stalled < stall_limit) {
       const auto c0 = candidate(0), c1 = candidate(1);
@@ -54,7 +54,7 @@ public:
       std::size_t v = c0 ? *c0 : *c1;
       if (c0 && c1 && fm_gain_order{}({gain_[*c1], *c1}, {gain_[*c0], *c0})) v = *c1;
       move(v);
-      const bisection_score s{balance_excess(w_, max_weight_), cut_};
+      const bisection_score s{balance_excess(w_, limits_), cut_};
       if (s < best) {
         best = s;
         best_length = moves_.size();
@@ -76,7 +76,7 @@ private:
   // unbalanced states when the bound is tight, e.g. exact halves), else no growth at all.
   std::optional<std::size_t> candidate(int side) const {
     if (count_[side] < 2) return std::nullopt;
-    const double excess = balance_excess(w_, max_weight_);
+    const double excess = balance_excess(w_, limits_);
     const double now = excess > 0.0 ? excess : slack_;
     std::size_t scanned = 0;
     for (const auto& [gain, v] : queue_[side]) {
@@ -84,7 +84,7 @@ private:
       std::array<double, 2> after = w_;
       after[side] -= vw;
       after[1 - side] += vw;
-      if (balance_excess(after, max_weight_) <= now) return v;
+      if (balance_excess(after, limits_) <= now) return v;
       if (++scanned == scan_limit) break;
     }
     return std::nullopt;
@@ -112,7 +112,7 @@ private:
 
   const ml_graph& g_;
   std::vector<std::uint8_t>& part_;
-  double max_weight_;
+  part_limits limits_;
   std::vector<double> gain_;
   std::vector<char> locked_;
   std::array<gain_queue, 2> queue_;
@@ -132,13 +132,13 @@ inline std::size_t fm_stall_limit(std::size_t n) {
 /// never scores worse than the input (scores are recomputed exactly after each pass).
 /// \pre part has two non-empty sides when g has >= 2 vertices. Returns the final score.
 inline bisection_score fm_refine(const ml_graph& g, std::vector<std::uint8_t>& part,
-                                 double max_weight, int max_passes) {
-  bisection_score current = score_bisection(g, part, max_weight);
+                                 const part_limits& limits, int max_passes) {
+  bisection_score current = score_bisection(g, part, limits);
   if (boost::num_vertices(g) < 2) return current;
   for (int pass = 0; pass < max_passes; ++pass) {
     std::vector<std::uint8_t> before = part;
-    fm_pass(g, part, max_weight).run(fm_stall_limit(boost::num_vertices(g)));
-    const bisection_score after = score_bisection(g, part, max_weight);
+    fm_pass(g, part, limits).run(fm_stall_limit(boost::num_vertices(g)));
+    const bisection_score after = score_bisection(g, part, limits);
     if (!(after < current)) {
       part = std::move(before);
       break;

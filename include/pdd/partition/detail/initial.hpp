@@ -70,10 +70,10 @@ struct growing_part {
 };
 
 /// Greedy graph growing: part 1 starts as {seed} and repeatedly takes the frontier vertex whose
-/// move raises the cut least, skipping vertices that would push it over max_weight, until it
+/// move raises the cut least, skipping vertices that would push it over its limit, until it
 /// reaches target. A disconnected graph continues from its lowest vertex outside part 1.
 inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t seed, double target,
-                                                double max_weight) {
+                                                const part_limits& limits) {
   const std::size_t n = boost::num_vertices(g);
   growing_part gp(g);
   std::size_t next_outside = 0;
@@ -81,7 +81,7 @@ inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t s
   while (gp.w1 < target && gp.count + 1 < n) {
     std::size_t pick = n;
     for (const auto& [p, v] : gp.frontier)
-      if (gp.w1 + g[v].weight <= max_weight) {
+      if (gp.w1 + g[v].weight <= limits[1]) {
         pick = v;
         break;
       }
@@ -96,19 +96,19 @@ inline std::vector<std::uint8_t> grow_bisection(const ml_graph& g, std::size_t s
 /// The best FM-refined bisection of (small) g among `tries` grown ones: try 0 grows by BFS
 /// from a pseudo-peripheral vertex, try 1 greedily from it, the others greedily from random
 /// vertices. Graphs of at most exact_bisection_max_vertices are solved exactly.
-inline std::vector<std::uint8_t> initial_bisection(const ml_graph& g, double max_weight, int tries,
-                                                   int fm_passes, std::mt19937_64& rng) {
+inline std::vector<std::uint8_t> initial_bisection(const ml_graph& g, const part_limits& limits,
+                                                   int tries, int fm_passes, std::mt19937_64& rng) {
   const std::size_t n = boost::num_vertices(g);
-  if (n <= exact_bisection_max_vertices) return exact_bisection(g, max_weight);
-  const double target = 0.5 * total_vertex_weight(g);
+  if (n <= exact_bisection_max_vertices) return exact_bisection(g, limits);
+  const double target = part1_target(limits, total_vertex_weight(g));
   const std::size_t peripheral = pseudo_peripheral_vertex(g, random_below(rng, n));
   std::vector<std::uint8_t> best;
   bisection_score best_score{};
   for (int t = 0; t < tries; ++t) {
     std::vector<std::uint8_t> part =
         t == 0 ? bfs_bisection(g, peripheral, target)
-               : grow_bisection(g, t == 1 ? peripheral : random_below(rng, n), target, max_weight);
-    const bisection_score s = fm_refine(g, part, max_weight, fm_passes);
+               : grow_bisection(g, t == 1 ? peripheral : random_below(rng, n), target, limits);
+    const bisection_score s = fm_refine(g, part, limits, fm_passes);
     if (best.empty() || s < best_score) {
       best = std::move(part);
       best_score = s;

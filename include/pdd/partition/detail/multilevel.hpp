@@ -25,7 +25,7 @@ struct multilevel_parameters {
 };
 
 /// One multilevel V-cycle with the generator rng. \pre num_vertices(g) >= 2.
-inline std::vector<std::uint8_t> multilevel_v_cycle(const ml_graph& g, double max_weight,
+inline std::vector<std::uint8_t> multilevel_v_cycle(const ml_graph& g, const part_limits& limits,
                                                     const multilevel_parameters& p,
                                                     std::mt19937_64& rng) {
   const double max_vertex_weight = 1.5 * total_vertex_weight(g) / static_cast<double>(p.coarsen_to);
@@ -40,30 +40,30 @@ inline std::vector<std::uint8_t> multilevel_v_cycle(const ml_graph& g, double ma
     if (stalled) break;
   }
   std::vector<std::uint8_t> part =
-      initial_bisection(*current, max_weight, p.initial_tries, p.refinement_passes, rng);
+      initial_bisection(*current, limits, p.initial_tries, p.refinement_passes, rng);
   for (std::size_t i = levels.size(); i-- > 0;) {
     const ml_graph& fine = i == 0 ? g : levels[i - 1].graph;
     std::vector<std::uint8_t> projected(boost::num_vertices(fine));
     for (std::size_t v = 0; v < projected.size(); ++v)
       projected[v] = part[levels[i].fine_to_coarse[v]];
     part = std::move(projected);
-    fm_refine(fine, part, max_weight, p.refinement_passes);
+    fm_refine(fine, part, limits, p.refinement_passes);
   }
   return part;
 }
 
 /// The best of p.trials V-cycles, each with its own generator seeded from (seed, trial); graphs
 /// of at most exact_bisection_max_vertices are solved exactly. Deterministic in (g, seed).
-inline std::vector<std::uint8_t> multilevel_bisection(const ml_graph& g, double max_weight,
+inline std::vector<std::uint8_t> multilevel_bisection(const ml_graph& g, const part_limits& limits,
                                                       const multilevel_parameters& p,
                                                       std::uint64_t seed) {
-  if (boost::num_vertices(g) <= exact_bisection_max_vertices) return exact_bisection(g, max_weight);
+  if (boost::num_vertices(g) <= exact_bisection_max_vertices) return exact_bisection(g, limits);
   std::vector<std::uint8_t> best;
   bisection_score best_score{};
   for (int trial = 0; trial < p.trials; ++trial) {
     std::mt19937_64 rng(mix_seed(seed, static_cast<std::uint64_t>(trial)));
-    std::vector<std::uint8_t> part = multilevel_v_cycle(g, max_weight, p, rng);
-    const bisection_score s = score_bisection(g, part, max_weight);
+    std::vector<std::uint8_t> part = multilevel_v_cycle(g, limits, p, rng);
+    const bisection_score s = score_bisection(g, part, limits);
     if (best.empty() || s < best_score) {
       best = std::move(part);
       best_score = s;

@@ -76,12 +76,13 @@ inline std::vector<std::uint8_t> repair_bisection(const partition_graph& g,
   return part;
 }
 
-/// Connected growths of part 1 up to half the weight (the grown part is connected; the rest need
-/// not be, so callers repair it): the BFS prefix from a pseudo-peripheral vertex a, and greedy
+/// Connected growths of part 1 up to its share of the weight (the grown part is connected; the rest
+/// need not be, so callers repair it): the BFS prefix from a pseudo-peripheral vertex a, and greedy
 /// graph growing (least cut increase first) from a and from the last vertex of a's BFS.
 /// \pre g connected, n >= 2; weight are the effective vertex weights. O((n + m) log n).
-inline std::vector<std::vector<std::uint8_t>>
-connected_growths(const partition_graph& g, const std::vector<double>& weight, double max_weight) {
+inline std::vector<std::vector<std::uint8_t>> connected_growths(const partition_graph& g,
+                                                                const std::vector<double>& weight,
+                                                                const part_limits& limits) {
   const std::size_t n = boost::num_vertices(g);
   double total = 0.0, grown = 0.0;
   for (const double w : weight)
@@ -89,13 +90,13 @@ connected_growths(const partition_graph& g, const std::vector<double>& weight, d
   const std::size_t a = pseudo_peripheral_vertex(g, 0);
   const std::vector<std::size_t> order = breadth_first_order(g, a, false);
   std::vector<std::vector<std::uint8_t>> growths(1, std::vector<std::uint8_t>(n, 0));
-  for (std::size_t i = 0; i + 1 < n && (i == 0 || grown < 0.5 * total); ++i) {
+  for (std::size_t i = 0; i + 1 < n && (i == 0 || grown < part1_target(limits, total)); ++i) {
     growths[0][order[i]] = 1;
     grown += weight[order[i]];
   }
   const ml_graph mg = to_ml_graph(g); // same effective weights
   for (const std::size_t seed : {a, order.back()})
-    growths.push_back(grow_bisection(mg, seed, 0.5 * total, max_weight));
+    growths.push_back(grow_bisection(mg, seed, part1_target(limits, total), limits));
   return growths;
 }
 

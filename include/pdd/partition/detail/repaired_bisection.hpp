@@ -38,22 +38,22 @@ inline std::vector<double> effective_vertex_weights(const partition_graph& g) {
 }
 
 inline bisection_score score_of(const partition_graph& g, const std::vector<std::uint8_t>& part,
-                                const std::vector<double>& weight, double max_weight) {
+                                const std::vector<double>& weight, const part_limits& limits) {
   std::array<double, 2> pw{0.0, 0.0};
   for (std::size_t v = 0; v < part.size(); ++v)
     pw[part[v]] += weight[v];
-  return {balance_excess(pw, max_weight), cut_weight(g, part)};
+  return {balance_excess(pw, limits), cut_weight(g, part)};
 }
 /// The best connected candidate derived from the disconnected bisection raw (see
 /// pdd::connected_bisection). \pre g connected, n >= 2.
 inline std::vector<std::uint8_t> repaired_bisection(const partition_graph& g,
                                                     const std::vector<std::uint8_t>& raw,
                                                     const std::vector<double>& weight,
-                                                    double max_weight) {
+                                                    const part_limits& limits) {
   const std::size_t n = raw.size();
   const auto repaired = [&](std::vector<std::uint8_t> part, std::uint8_t first) {
     part = repair_bisection(g, std::move(part), first, weight);
-    connected_refine(g, part, weight, max_weight, n);
+    connected_refine(g, part, weight, limits, n);
     return part;
   };
   const std::size_t ones = static_cast<std::size_t>(std::count(raw.begin(), raw.end(), 1));
@@ -62,12 +62,12 @@ inline std::vector<std::uint8_t> repaired_bisection(const partition_graph& g,
     candidates.push_back(repaired(raw, 0));
     candidates.push_back(repaired(raw, 1));
   }
-  for (std::vector<std::uint8_t>& growth : connected_growths(g, weight, max_weight))
+  for (std::vector<std::uint8_t>& growth : connected_growths(g, weight, limits))
     candidates.push_back(repaired(std::move(growth), 1));
   std::size_t best = 0;
-  bisection_score best_score = score_of(g, candidates[0], weight, max_weight);
+  bisection_score best_score = score_of(g, candidates[0], weight, limits);
   for (std::size_t i = 1; i < candidates.size(); ++i) {
-    const bisection_score s = score_of(g, candidates[i], weight, max_weight);
+    const bisection_score s = score_of(g, candidates[i], weight, limits);
     if (s < best_score) best = i, best_score = s;
   }
   PDD_ASSERT(is_connected_bisection(g, candidates[best]));
