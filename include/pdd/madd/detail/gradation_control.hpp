@@ -149,16 +149,18 @@ struct gradation_policy_state {
   /// finds the measures of the assembled subdomains there).
   std::unordered_map<std::string, std::size_t> last_index;
 
-  /// The bitwise key of a box of points (and of an area).
+  /// The bitwise key of a box of points, their count (a leaf that a neighbour's split gave a
+  /// vertex on an edge is measured anew: the measure samples its vertices) and an area.
   template <class Loop>
   static std::string key_of(const Loop& outer, double area) {
     pdd::bbox b;
     for (const point& p : outer)
       b = {std::min(b.xmin, p.x), std::min(b.ymin, p.y), std::max(b.xmax, p.x),
            std::max(b.ymax, p.y)};
-    std::string k(5 * sizeof(double), '\0');
-    const double vals[5] = {b.xmin, b.ymin, b.xmax, b.ymax, area};
-    for (int i = 0; i < 5; ++i)
+    std::string k(6 * sizeof(double), '\0');
+    const double vals[6] = {b.xmin, b.ymin, b.xmax,
+                            b.ymax, area,   static_cast<double>(outer.size())};
+    for (int i = 0; i < 6; ++i)
       for (std::size_t j = 0; j < sizeof(double); ++j)
         k[i * sizeof(double) + j] =
             static_cast<char>((std::bit_cast<std::uint64_t>(vals[i]) >> (8 * j)) & 0xffu);
