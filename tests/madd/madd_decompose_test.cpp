@@ -185,6 +185,42 @@ TEST(MaddDecompose, SmoothingKeepsThePartitionersBalance) {
   }
 }
 
+// Into N, every subdomain has a quota (madd/detail/quotas.hpp): N just below a power of two,
+// where halving the largest first leaves one subdomain of twice the others' area (1.75 at
+// N = 7 with perfect splits; 1.52-1.73 measured before quotas), is balanced too.
+TEST(MaddDecompose, QuotasBalanceCountsThatAreNotPowersOfTwo) {
+  const auto key = pdd::key_domain();
+  const auto pipe = pdd::pipe_domain(512, 32);
+  for (const std::size_t n : {3u, 5u, 7u, 11u, 13u, 23u, 47u, 95u}) {
+    for (const auto* g : {&key, &pipe}) {
+      pdd::decomposition_statistics st;
+      const auto d = pdd::decompose(*g, {.subdomains = n, .threads = 2}, {}, &st);
+      expect_valid(d, *g, n, 60.0, "quotas N=" + std::to_string(n));
+      EXPECT_LE(st.max_area_over_mean, 1.5) << n;
+      if (n <= 13) {
+        EXPECT_LE(st.max_area_over_mean, 1.3) << n;
+      }
+    }
+  }
+  const auto one = pdd::decompose(pipe, {.subdomains = 95, .threads = 1});
+  EXPECT_TRUE(identical(one, pdd::decompose(pipe, {.subdomains = 95, .threads = 2})));
+  const auto dir = pdd::test::shared_data_dir();
+  if (dir.empty()) GTEST_SKIP() << "../shared/data is absent";
+  const pdd::pslg lake = pdd::read_poly((dir / "lake_superior.poly").string());
+  int above = 0;
+  for (std::size_t n = 2; n < 40; ++n) {
+    pdd::decomposition_statistics st;
+    const auto d = pdd::decompose(lake, {.subdomains = n, .threads = 2}, {}, &st);
+    expect_valid(d, lake, n, 60.0, "lake N=" + std::to_string(n));
+    EXPECT_LE(st.max_area_over_mean, 1.6) << n;
+    if (n == 7) {
+      EXPECT_LE(st.max_area_over_mean, 1.25);
+    }
+    above += st.max_area_over_mean > 1.5;
+  }
+  EXPECT_LE(above, 2); // 1 measured (N = 25, 1.54)
+}
+
 TEST(MaddDecompose, OtherAnglesAndOptions) {
   const auto g = pdd::key_domain();
   for (const double phi0 : {30.0, 45.0, 70.0}) {

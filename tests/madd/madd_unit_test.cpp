@@ -4,6 +4,7 @@
 // insertion (Figure 3.10) and the edge-split registry that keeps neighbours conforming.
 #include <pdd/madd/detail/assemble.hpp>
 #include <pdd/madd/detail/graph.hpp>
+#include <pdd/madd/detail/quotas.hpp>
 #include <pdd/madd/detail/split.hpp>
 #include <pdd/madd/detail/triangulation.hpp>
 #include <pdd/partition/default_partitioner.hpp>
@@ -15,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <numbers>
 #include <random>
 #include <set>
@@ -333,6 +335,81 @@ TEST(MaddSplit, SeparatorInsertion) {
     }
     EXPECT_GT(separator_edges, 0u);
     EXPECT_EQ(separator_edges % 2, 0u); // each separator piece in both children
+  }
+}
+
+TEST(MaddQuotas, ChildQuotasAndBalance) {
+  using pdd::detail::child_quotas;
+  using pdd::detail::split_balance;
+  EXPECT_EQ(child_quotas(1.0, 2.0, 3), (std::array<std::size_t, 2>{1, 2}));
+  EXPECT_EQ(child_quotas(2.0, 1.0, 3), (std::array<std::size_t, 2>{2, 1}));
+  EXPECT_EQ(child_quotas(0.99, 0.01, 10), (std::array<std::size_t, 2>{9, 1}));
+  EXPECT_EQ(child_quotas(0.01, 0.99, 10), (std::array<std::size_t, 2>{1, 9}));
+  EXPECT_EQ(child_quotas(1.0, 1.0, 2), (std::array<std::size_t, 2>{1, 1}));
+  EXPECT_DOUBLE_EQ(split_balance(0.6, 0.4, 2), 0.6);  // quota 2: the larger share
+  EXPECT_DOUBLE_EQ(split_balance(0.6, 0.4, 0), 0.6);  // not into N: halves
+  EXPECT_DOUBLE_EQ(split_balance(1.0, 2.0, 3), 0.5);  // a third and two thirds: exact
+  EXPECT_DOUBLE_EQ(split_balance(1.5, 1.5, 3), 0.75); // halves of a region of three
+  EXPECT_DOUBLE_EQ(pdd::detail::target_share(3), 1.0 / 3.0);
+  EXPECT_DOUBLE_EQ(pdd::detail::target_share(8), 0.5);
+  EXPECT_DOUBLE_EQ(pdd::detail::target_share(0), 0.5);
+  // the quotas are the best: no other split of q lowers the larger area per subdomain
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> area(0.01, 1.0);
+  for (int trial = 0; trial < 500; ++trial) {
+    const double a0 = area(rng), a1 = area(rng);
+    const std::size_t q = 2 + rng() % 40;
+    const auto got = child_quotas(a0, a1, q);
+    ASSERT_EQ(got[0] + got[1], q);
+    const double worst = std::max(a0 / got[0], a1 / got[1]);
+    for (std::size_t q0 = 1; q0 < q; ++q0)
+      EXPECT_LE(worst, std::max(a0 / q0, a1 / (q - q0)) * (1 + 1e-15)) << trial;
+  }
+}
+
+// allot_quotas minimises the largest area per subdomain (checked against exhaustive search
+// on small cases); regions left out keep their quota.
+TEST(MaddQuotas, AllotmentIsOptimal) {
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> area(0.05, 1.0);
+  for (int trial = 0; trial < 300; ++trial) {
+    const std::size_t n = 2 + rng() % 3, extra = rng() % 7;
+    std::vector<double> areas(n);
+    for (double& a : areas)
+      a = area(rng);
+    std::vector<std::size_t> quotas(n, 1), open;
+    for (std::size_t i = 0; i < n; ++i)
+      if (i != 0 || trial % 2) open.push_back(i); // region 0 is closed in even trials
+    pdd::detail::allot_quotas(areas, quotas, open, extra);
+    std::size_t sum = 0;
+    double worst = 0.0;
+    for (std::size_t i = 0; i < n; ++i)
+      sum += quotas[i], worst = std::max(worst, areas[i] / quotas[i]);
+    EXPECT_EQ(sum, n + extra);
+    if (trial % 2 == 0) {
+      EXPECT_EQ(quotas[0], 1u);
+    }
+    // exhaustive: every way of handing `extra` to the open regions
+    double best = 1e300;
+    std::vector<std::size_t> q(n, 1);
+    const std::function<void(std::size_t, std::size_t)> search = [&](std::size_t k,
+                                                                     std::size_t left) {
+      if (k == open.size()) {
+        if (left != 0) return;
+        double w = 0.0;
+        for (std::size_t i = 0; i < n; ++i)
+          w = std::max(w, areas[i] / q[i]);
+        best = std::min(best, w);
+        return;
+      }
+      for (std::size_t give = 0; give <= left; ++give) {
+        q[open[k]] = 1 + give;
+        search(k + 1, left - give);
+      }
+      q[open[k]] = 1;
+    };
+    search(0, extra);
+    EXPECT_DOUBLE_EQ(worst, best) << trial;
   }
 }
 

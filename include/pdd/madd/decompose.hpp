@@ -32,10 +32,11 @@
 namespace pdd {
 
 /// Decomposes the domain of g into subdomains by MADD (dissertation ch. 3-4): N-way by divide
-/// and conquer (3.7), the largest subdomains first, concurrently in rounds (4.3: a round
-/// splits the min(count, N - count) largest subdomains, each split a pure function of its
+/// and conquer (3.7), concurrently in rounds (4.3; each split a pure function of its
 /// subdomain, so the result is bitwise identical for every thread count), with dynamic
-/// refinement (4.1), smoothing (4.2) and the connectivity and angle repairs of 5.1.
+/// refinement (4.1), smoothing (4.2) and the connectivity and angle repairs of 5.1. Into N,
+/// every subdomain has a quota of the N and is split in proportion to it (madd_options::
+/// round_fraction says how); by an area bound or a split policy, the largest first.
 ///
 /// Guarantees: exactly N subdomains (or all with area <= max_subdomain_area), each a polygon
 /// with holes; every separator angle with the boundary or another separator >= Phi0 (input
@@ -79,6 +80,7 @@ decomposition decompose(const madd_start& start, const madd_options& o = {},
       for (std::size_t k = first; k != last; ++k) {
         detail::madd_split_options sk = so;
         sk.target_length = detail::target_length(state.leaves[(*order)[k]].region, o, global_h);
+        if (state.by_quota) sk.quota = state.leaves[(*order)[k]].quota;
         res[k] = detail::split_region(state.leaves[(*order)[k]].region, sk, partitioner);
       }
     };

@@ -42,10 +42,12 @@ struct decomposition_statistics {
   /// Splits of a region with features (a general PSLG) where no medial-axis separator cleared
   /// the features and a straight chord beside them was used.
   std::size_t chord_splits = 0;
-  /// Larger child area / parent area: mean and maximum over the splits.
+  /// The balance of a split: for a region split in two halves, larger child area / parent
+  /// area; for one that is to become q subdomains (into N), the larger area per subdomain of
+  /// the children over the parent's, halved. Mean over the splits.
   double mean_split_fraction = 0.0;
-  /// The maximum over the splits of larger child area / parent area (0.5: an even split; 0
-  /// when there was no split).
+  /// The maximum over the splits of the balance above (0.5: an even split; 0 when there was
+  /// no split).
   double max_split_fraction = 0.0;
   /// splits_per_level[l]: successful splits that used refinement level l (r 2^l).
   std::vector<std::size_t> splits_per_level;

@@ -185,17 +185,19 @@ struct chord_choice {
   }
 };
 
-/// The largest child's share of the area if r is cut by the chord u w.
-inline double chord_fraction(const madd_region& r, const madd_zvertex& u, const madd_zvertex& w) {
+/// The split_balance of r cut by the chord u w into `quota` subdomains (for quota 2, the
+/// larger child's share of the area).
+inline double chord_fraction(const madd_region& r, const madd_zvertex& u, const madd_zvertex& w,
+                             std::size_t quota) {
   const std::array<madd_region, 2> ch = chord_cut(r, u, w);
-  return std::max(ch[0].area, ch[1].area) / (ch[0].area + ch[1].area);
+  return split_balance(ch[0].area, ch[1].area, quota);
 }
 
 /// The chord from refinement point u along direction d, checked; nullopt when it fails.
 inline std::optional<chord_choice>
 chord_from(const madd_region& r, const std::vector<madd_zvertex>& z,
            const std::vector<std::vector<std::uint32_t>>& edge_pts, std::uint32_t u, point d,
-           double phi0, double clearance) {
+           double phi0, double clearance, std::size_t quota) {
   const std::optional<chord_ray_hit> hit = cast_chord_ray(r, z[u].p, d, z[u].edge);
   if (!hit || hit->loop != 0) return std::nullopt;
   const std::uint32_t w = nearest_point(z, edge_pts[hit->edge], hit->at);
@@ -203,7 +205,7 @@ chord_from(const madd_region& r, const std::vector<madd_zvertex>& z,
   if (!chord_end_ok(z[u], z[w].p, phi0) || !chord_end_ok(z[w], z[u].p, phi0)) return std::nullopt;
   if (!chord_clear_of_loops(r, z[u], z[w], clearance)) return std::nullopt;
   if (!chord_clear_of_features(r, z[u].p, z[w].p, clearance)) return std::nullopt;
-  return chord_choice{u, w, chord_fraction(r, z[u], z[w]), distance(z[u].p, z[w].p)};
+  return chord_choice{u, w, chord_fraction(r, z[u], z[w], quota), distance(z[u].p, z[w].p)};
 }
 
 /// The least clearance of a chord, as a share of the region's level-0 spacing (the split's
@@ -219,7 +221,7 @@ inline constexpr std::size_t max_chord_starts = 512;
 /// refinement points of the outer loop (every stride-th where there are more than
 /// max_chord_starts).
 inline chord_choice best_chord_at(const madd_region& r, const std::vector<madd_zvertex>& z,
-                                  double phi0, double clearance) {
+                                  double phi0, double clearance, std::size_t quota) {
   const std::vector<std::vector<std::uint32_t>> edge_pts = outer_edge_points(r, z);
   std::vector<std::uint32_t> starts;
   for (const std::vector<std::uint32_t>& pts : edge_pts)
@@ -234,7 +236,7 @@ inline chord_choice best_chord_at(const madd_region& r, const std::vector<madd_z
     for (const double turn : {0.0, 15.0, -15.0, 30.0, -30.0}) {
       const double a = base + turn * (std::numbers::pi / 180.0);
       const std::optional<chord_choice> c =
-          chord_from(r, z, edge_pts, u, {std::cos(a), std::sin(a)}, phi0, clearance);
+          chord_from(r, z, edge_pts, u, {std::cos(a), std::sin(a)}, phi0, clearance, quota);
       if (c && c->better_than(best)) best = *c;
     }
   }
@@ -255,7 +257,7 @@ inline madd_split_result chord_split(const madd_region& r, const madd_split_opti
     ++best.levels_tried;
     const double clearance =
         std::max({h, o.feature_clearance, min_chord_clearance * o.target_length});
-    const chord_choice c = best_chord_at(r, z, o.graph.phi0_accept, clearance);
+    const chord_choice c = best_chord_at(r, z, o.graph.phi0_accept, clearance, o.quota);
     if (c.u == no_index || !c.better_than(best_choice)) continue;
     best_choice = c;
     best_z = std::move(z);

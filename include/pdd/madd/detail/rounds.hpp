@@ -6,6 +6,7 @@
 #include <pdd/errors.hpp>
 #include <pdd/madd/decomposition_statistics.hpp>
 #include <pdd/madd/detail/assemble.hpp>
+#include <pdd/madd/detail/quotas.hpp>
 #include <pdd/madd/detail/region.hpp>
 #include <pdd/madd/detail/split.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -51,18 +52,20 @@ inline double target_length(const madd_region& r, const madd_options& o, double 
   return 4.0 * r.area / (region_perimeter(r) * o.refinement_factor);
 }
 
-/// A leaf of the split tree: a region, and whether it is final (a split of it failed; `why`
-/// says how).
+/// A leaf of the split tree: a region, whether it is final (a split of it failed; `why`
+/// says how), and, into N subdomains, how many it is to become (quotas.hpp).
 struct madd_leaf {
   madd_region region;
   bool final = false;
   std::string why;
+  std::size_t quota = 1;
 };
 
 /// The leaves of decompose's split tree and the goal (N subdomains, or an area bound).
 struct madd_state {
   madd_state(std::vector<madd_region> regions, const madd_options& o)
-      : by_area(std::isfinite(o.max_subdomain_area)), by_policy(bool(o.split_policy)) {
+      : by_area(std::isfinite(o.max_subdomain_area)), by_policy(bool(o.split_policy)),
+        by_quota(!by_area && !by_policy) {
     if (regions.empty()) throw decomposition_error("MADD: the PSLG bounds no domain");
     if (!by_area && o.subdomains < regions.size())
       throw decomposition_error(
@@ -70,10 +73,12 @@ struct madd_state {
           " connected components (faces, for a general PSLG), more than the " +
           std::to_string(o.subdomains) + " subdomains asked for");
     for (auto& r : regions)
-      leaves.push_back({std::move(r), false, {}});
+      leaves.push_back({std::move(r), false, {}, 1});
+    if (by_quota) allot(o.subdomains);
   }
   bool by_area;   ///< split until every area <= max_subdomain_area (3.7), else into N
   bool by_policy; ///< madd_options::split_policy decides (4.4, 7.3)
+  bool by_quota;  ///< into N: every leaf is split until its quota is 1 (quotas.hpp)
   std::vector<madd_leaf> leaves;
   std::vector<double> priority; ///< by_policy: the policy's priority of every leaf
 
@@ -94,6 +99,20 @@ struct madd_state {
                                 std::to_string(priority.size()) + " priorities for " +
                                 std::to_string(leaves.size()) + " subdomains");
   }
+  /// Shares n subdomains among the leaves (quotas.hpp): 1 each, and the rest to the leaves
+  /// that can still be split (not final, not kept whole), the largest area per subdomain
+  /// first. A final leaf keeps the quota it failed with (throw_unsplittable names it).
+  void allot(std::size_t n) {
+    std::vector<double> areas(leaves.size());
+    std::vector<std::size_t> quotas(leaves.size(), 1), open;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+      areas[i] = leaves[i].region.area;
+      if (!leaves[i].final && !leaves[i].region.keep_whole) open.push_back(i);
+    }
+    allot_quotas(areas, quotas, open, n - std::min(n, leaves.size()));
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+      if (!leaves[i].final) leaves[i].quota = quotas[i];
+  }
   /// What orders the splits: the policy's priority, else the area (largest first).
   double split_key(std::size_t i) const { return by_policy ? priority[i] : leaves[i].region.area; }
   /// Whether leaf i still has to be split (by area: larger than the bound; by policy: a
@@ -101,7 +120,8 @@ struct madd_state {
   bool wanted(std::size_t i, const madd_options& o) const {
     if (leaves[i].region.keep_whole) return false;
     if (by_policy) return priority[i] > 0.0;
-    return !by_area || leaves[i].region.area > o.max_subdomain_area;
+    if (by_quota) return leaves[i].quota > 1;
+    return leaves[i].region.area > o.max_subdomain_area;
   }
   /// The regions, moved out (the state is spent).
   std::vector<madd_region> regions() {
@@ -168,13 +188,17 @@ inline bool any_wanted(const madd_state& s, const madd_options& o) {
 }
 
 /// The leaves to split in the next round (4.3), largest key first (the area, or the split
-/// policy's priority; ties: lower index): only what a sequential largest-first loop would
-/// split next, i.e. leaves of at least round_fraction times the largest key (their children
-/// are smaller than that as long as splits are balanced to round_fraction, so no child would
-/// be split before them), at most N - count. nullopt when the goal is reached.
+/// policy's priority; ties: lower index). Into N: the quotas are shared anew among the leaves
+/// (so a child left larger than its share gets more: the partitioner's imbalance is corrected,
+/// not compounded) and every leaf whose quota is above 1 is split. Otherwise only what a
+/// sequential largest-first loop would split next, i.e. leaves of at least round_fraction
+/// times the largest key (their children are smaller than that as long as splits are balanced
+/// to round_fraction, so no child would be split before them). nullopt when the goal is
+/// reached.
 /// \throws decomposition_error when nothing can be split.
 inline std::optional<std::vector<std::size_t>> next_round(madd_state& s, const madd_options& o) {
   s.update_priorities(o);
+  if (s.by_quota) s.allot(o.subdomains);
   std::vector<std::size_t> order;
   for (std::size_t i = 0; i < s.leaves.size(); ++i)
     if (!s.leaves[i].final && s.wanted(i, o)) order.push_back(i);
@@ -183,11 +207,12 @@ inline std::optional<std::vector<std::size_t>> next_round(madd_state& s, const m
   if (s.by_area ? order.empty() : s.leaves.size() >= o.subdomains) return std::nullopt;
   if (s.by_policy && !any_wanted(s, o)) return std::nullopt;
   if (order.empty()) throw_unsplittable(s, o);
+  if (s.by_quota) return order;
   const double cut = o.round_fraction * s.split_key(order[0]);
   std::size_t take = 0;
   while (take < order.size() && s.split_key(order[take]) >= cut)
     ++take;
-  if (!s.by_area) take = std::min(take, o.subdomains - s.leaves.size());
+  if (s.by_policy) take = std::min(take, o.subdomains - s.leaves.size());
   order.resize(take);
   return order;
 }
@@ -220,10 +245,15 @@ inline void apply_round(madd_state& s, const std::vector<std::size_t>& order,
     const int k = split_of[i];
     st.levels_tried += k >= 0 ? res[k].levels_tried : 0;
     if (k >= 0 && res[k].ok) {
+#ifdef PDD_DEBUG_QUOTA
+      std::fprintf(stderr, "Q %zu %.4f %d %zu %.4g %.4g\n", s.leaves[i].quota, res[k].max_fraction,
+                   res[k].level, res[k].graph_nodes, res[k].children[0].area,
+                   res[k].children[1].area);
+#endif
       record_split(res[k], st);
       kept.insert(kept.end(), res[k].kept.begin(), res[k].kept.end());
       for (auto& c : res[k].children)
-        next.push_back({std::move(c), false, {}});
+        next.push_back({std::move(c), false, {}, 1});
       continue;
     }
     next.push_back(std::move(s.leaves[i]));

@@ -92,13 +92,26 @@ inline bool part_connected_without(const partition_graph& pg, const std::vector<
   return reached == members;
 }
 
+/// The part limits of the smoothing: o's, or with keep_balance those of the balance of the
+/// part weights pw the partitioner reached (when tighter).
+inline part_limits smoothing_limits(const bisection_options& o, const std::array<double, 2>& pw,
+                                    double total, bool keep_balance) {
+  const part_limits limits = part_weight_limits(o, total);
+  if (!keep_balance) return limits;
+  const double share[2] = {o.target_fraction, 1.0 - o.target_fraction};
+  const double reached = std::max(pw[0] / share[0], pw[1] / share[1]);
+  return {std::min(limits[0], reached * share[0]), std::min(limits[1], reached * share[1])};
+}
+
 /// Second smoothing step (4.2): moves single nodes across the cut while that lowers the
 /// weighted separator cost (f0 f1 times the length), keeps both parts connected, keeps the
-/// larger part <= `bound` of the total (or no larger than before; MADD passes
-/// madd_options::max_part_fraction, the partitioner's own balance) and pinches no child.
+/// parts within `o`'s limits (or no further over them than before; MADD passes the
+/// partitioner's own options) and pinches no child. With `keep_balance` (MADD into N, where the
+/// quotas rest on the children's areas) the limits are those of the balance the partitioner
+/// reached, so that the search trades no balance for length.
 inline std::size_t smooth_bisection(const madd_triangulation& tr, const madd_graph& g,
                                     const partition_graph& pg, std::vector<std::uint8_t>& np,
-                                    double bound) {
+                                    const bisection_options& o, bool keep_balance) {
   const std::size_t n = boost::num_vertices(pg);
   double total = 0.0;
   std::array<double, 2> pw{0.0, 0.0};
@@ -106,6 +119,7 @@ inline std::size_t smooth_bisection(const madd_triangulation& tr, const madd_gra
     total += pg[v].weight;
     pw[np[v]] += pg[v].weight;
   }
+  const part_limits limits = smoothing_limits(o, pw, total, keep_balance);
   std::size_t moves = 0;
   for (int pass = 0; pass < 4; ++pass) {
     bool improved = false;
@@ -118,9 +132,10 @@ inline std::size_t smooth_bisection(const madd_triangulation& tr, const madd_gra
         gain += np[boost::target(e, pg)] != p ? w : -w;
       }
       if (!(gain > 1e-12 * wsum)) continue;
-      const double before = std::max(pw[0], pw[1]);
-      const double after = std::max(pw[p] - pg[x].weight, pw[1 - p] + pg[x].weight);
-      if (after > std::max(bound * total, before)) continue;
+      std::array<double, 2> after = pw;
+      after[p] -= pg[x].weight;
+      after[1 - p] += pg[x].weight;
+      if (balance_excess(after, limits) > balance_excess(pw, limits)) continue;
       if (!part_connected_without(pg, np, p, x)) continue;
       np[x] = static_cast<std::uint8_t>(1 - p);
       if (!pinch_vertices(tr, g, cell_parts(g, np)).empty()) {
@@ -208,7 +223,7 @@ inline void keep_cheapest_cut_pieces(madd_graph& g, const std::vector<std::uint8
 template <GraphPartitioner P>
 bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_graph& g,
                    const madd_split_options& o, const P& partitioner, madd_split_result& out) {
-  const bisection_options bo{o.max_part_fraction, o.seed};
+  const bisection_options bo{o.max_part_fraction, o.seed, target_share(o.quota)};
   for (int attempt = 0; attempt <= o.max_repairs; ++attempt) {
     if (g.nodes < 2) {
       out.failure = "every candidate separator was contracted by the repairs";
@@ -216,8 +231,7 @@ bool bisect_region(const madd_region& r, const madd_triangulation& tr, madd_grap
     }
     const partition_graph pg = contracted_graph(g);
     std::vector<std::uint8_t> np = connected_bisection(pg, partitioner, bo);
-    if (o.graph.smoothing)
-      out.smoothing_moves += smooth_bisection(tr, g, pg, np, o.max_part_fraction);
+    if (o.graph.smoothing) out.smoothing_moves += smooth_bisection(tr, g, pg, np, bo, o.quota >= 2);
     const std::vector<std::uint8_t> part = cell_parts(g, np);
     const std::vector<std::uint32_t> bad = pinch_vertices(tr, g, part);
     if (bad.empty()) {
@@ -279,13 +293,14 @@ madd_split_result split_at_level(const madd_region& r, const madd_split_options&
   }
   distribute_features(r, cur.children);
   cur.ok = true;
-  cur.max_fraction = std::max(cur.children[0].area, cur.children[1].area) /
-                     (cur.children[0].area + cur.children[1].area);
+  cur.max_fraction = split_balance(cur.children[0].area, cur.children[1].area, o.quota);
   return cur;
 }
 
 /// The medial-axis split of a region (one MADD step with dynamic refinement, algorithm 2 when
-/// algorithm 1 finds nothing).
+/// algorithm 1 finds nothing): refinement levels until a split's balance is within
+/// accepted_balance, at most extra_levels after the first valid split; the best balanced one
+/// is kept.
 template <GraphPartitioner P>
 madd_split_result medial_axis_split(const madd_region& r, const madd_split_options& o,
                                     const P& partitioner) {
@@ -301,7 +316,8 @@ madd_split_result medial_axis_split(const madd_region& r, const madd_split_optio
     }
     cur.levels_tried = best.levels_tried;
     if (!best.ok || cur.max_fraction < best.max_fraction) best = std::move(cur);
-    if (best.max_fraction <= o.imbalance_bound) break;
+    if (best.max_fraction <= accepted_balance(o)) break;
+    if (best.max_fraction <= o.imbalance_bound && best.graph_nodes >= coarse_graph_nodes) break;
     stop_level = std::min(stop_level, level + 1 + o.extra_levels);
   }
   if (!best.ok && o.graph.algorithm == 1) {
