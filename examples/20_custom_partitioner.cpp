@@ -11,12 +11,13 @@
 #include <numeric>
 #include <vector>
 
-// Coordinate bisection: orders the vertices by x and gives part 1 the right half of the weight.
+// Coordinate bisection: orders the vertices by x and gives part 0 the left share of the weight
+// (bisection_options::target_fraction: a half unless MADD asks for uneven shares).
 struct coordinate_partitioner {
   std::vector<double> x; // one coordinate per vertex
 
   std::vector<std::uint8_t> bisect(const pdd::partition_graph& g,
-                                   const pdd::bisection_options&) const {
+                                   const pdd::bisection_options& o) const {
     std::vector<std::size_t> order(boost::num_vertices(g));
     std::iota(order.begin(), order.end(), std::size_t{0});
     std::stable_sort(order.begin(), order.end(),
@@ -25,7 +26,7 @@ struct coordinate_partitioner {
     for (std::size_t v : order)
       total += g[v].weight;
     std::vector<std::uint8_t> part(order.size(), 1);
-    for (std::size_t i = 0; i + 1 < order.size() && left < 0.5 * total; ++i) {
+    for (std::size_t i = 0; i + 1 < order.size() && left < o.target_fraction * total; ++i) {
       part[order[i]] = 0;
       left += g[order[i]].weight;
     }
