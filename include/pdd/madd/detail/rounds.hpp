@@ -245,11 +245,6 @@ inline void apply_round(madd_state& s, const std::vector<std::size_t>& order,
     const int k = split_of[i];
     st.levels_tried += k >= 0 ? res[k].levels_tried : 0;
     if (k >= 0 && res[k].ok) {
-#ifdef PDD_DEBUG_QUOTA
-      std::fprintf(stderr, "Q %zu %.4f %d %zu %.4g %.4g\n", s.leaves[i].quota, res[k].max_fraction,
-                   res[k].level, res[k].graph_nodes, res[k].children[0].area,
-                   res[k].children[1].area);
-#endif
       record_split(res[k], st);
       kept.insert(kept.end(), res[k].kept.begin(), res[k].kept.end());
       for (auto& c : res[k].children)
