@@ -20,6 +20,7 @@ mesher_result mesher::mesh(const pslg& d, const mesh_criteria& criteria, const S
   nm::cavity cav;
   nm::build(tr, cav, d);
   nm::segment_ids ids(d, tr.pts.size());
+  nm::reserve_for_area_bound(tr, ids.of_vertex, criteria.max_area);
   nm::refiner<S>(tr, cav, ids, d, criteria, sizing).run();
   return nm::extract(tr, ids, d);
 }

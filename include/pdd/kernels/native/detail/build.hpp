@@ -7,11 +7,13 @@
 #pragma once
 
 #include <pdd/core/pslg.hpp>
+#include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangulation_levels.hpp>
 #include <pdd/errors.hpp>
 #include <pdd/kernels/detail/mesher_input.hpp>
 #include <pdd/kernels/native/detail/insertion.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -31,7 +33,7 @@ inline void insert_vertices(triangulation& tr, cavity& cav, const pslg& d) {
     const std::uint32_t t = tr.locate(p, hint, rng);
     for (int k = 0; k < 3; ++k)
       if (tr.at(t, k).x == p.x && tr.at(t, k).y == p.y)
-        throw meshing_error(-1, "vertices " + std::to_string(tr.corner[t][k]) + " and " +
+        throw meshing_error(-1, "vertices " + std::to_string(tr.corner(t)[k]) + " and " +
                                     std::to_string(i) + " coincide");
     cav.grow(tr, p, {t}, no_ref);
     cav.commit(tr, static_cast<index_t>(i));
@@ -55,16 +57,16 @@ inline void crossed_edges(const triangulation& tr, index_t a, index_t b, std::si
     if (oq == 0 && (q.x - pa.x) * (pb.x - pa.x) + (q.y - pa.y) * (pb.y - pa.y) > 0)
       throw meshing_error(-1, name + " contains an input vertex");
     if (oq < 0 && orient(pa, pb, r) > 0) break;
-    t = ref_tri(tr.adj[t][prev3(k)]);
+    t = ref_tri(tr.adj(t)[prev3(k)]);
   }
   int edge = tr.index_of(t, a);
-  index_t right = tr.corner[t][next3(edge)], left = tr.corner[t][prev3(edge)];
+  index_t right = tr.corner(t)[next3(edge)], left = tr.corner(t)[prev3(edge)];
   for (;;) {
     if (tr.constrained(t, edge)) throw meshing_error(-1, name + " intersects another segment");
     out.emplace_back(left, right);
-    const ref_t n = tr.adj[t][edge];
+    const ref_t n = tr.adj(t)[edge];
     t = ref_tri(n);
-    const index_t apex = tr.corner[t][ref_edge(n)];
+    const index_t apex = tr.corner(t)[ref_edge(n)];
     if (apex == b) return;
     const int o = orient(pa, pb, tr.pts[apex]);
     if (o == 0) throw meshing_error(-1, name + " contains an input vertex");
@@ -87,8 +89,8 @@ inline void recover_segment(triangulation& tr, index_t a, index_t b, std::size_t
       const ref_t e = tr.find_edge(queue[head].first, queue[head].second);
       const std::uint32_t t = ref_tri(e);
       const int i = ref_edge(e);
-      const ref_t nb = tr.adj[t][i];
-      const index_t p = tr.corner[t][i], sv = tr.corner[ref_tri(nb)][ref_edge(nb)];
+      const ref_t nb = tr.adj(t)[i];
+      const index_t p = tr.corner(t)[i], sv = tr.corner(ref_tri(nb))[ref_edge(nb)];
       const point &pp = tr.pts[p], &ps = tr.pts[sv];
       if (orient(pp, tr.at(t, next3(i)), ps) <= 0 || orient(ps, tr.at(t, prev3(i)), pp) <= 0) {
         queue.push_back(queue[head]); // not convex yet
@@ -108,12 +110,12 @@ inline void make_delaunay(triangulation& tr) {
   std::vector<ref_t> stack;
   for (std::uint32_t t = 0; t < tr.size(); ++t)
     for (int i = 0; i < 3; ++i)
-      if (tr.adj[t][i] != no_ref && ref_tri(tr.adj[t][i]) > t) stack.push_back(make_ref(t, i));
+      if (tr.adj(t)[i] != no_ref && ref_tri(tr.adj(t)[i]) > t) stack.push_back(make_ref(t, i));
   while (!stack.empty()) {
     const std::uint32_t t = ref_tri(stack.back());
     const int i = ref_edge(stack.back());
     stack.pop_back();
-    const ref_t nb = tr.adj[t][i];
+    const ref_t nb = tr.adj(t)[i];
     if (nb == no_ref || tr.constrained(t, i)) continue;
     const std::uint32_t u = ref_tri(nb);
     if (!in_circle(tr.at(t, 0), tr.at(t, 1), tr.at(t, 2), tr.at(u, ref_edge(nb)))) continue;
@@ -129,7 +131,7 @@ struct face_ref {
   std::uint32_t t = no_ref;
   const face_ref* operator->() const noexcept { return this; }
   face_ref neighbor(int i) const noexcept {
-    const ref_t n = tr->adj[t][i];
+    const ref_t n = tr->adj(t)[i];
     return {tr, n == no_ref ? t : ref_tri(n)};
   }
   bool is_constrained(int i) const noexcept { return tr->constrained(t, i); }
@@ -149,26 +151,45 @@ inline void mark_domain(triangulation& tr, const pslg& d) {
                [&level](face_ref f) -> int& { return level[f.t]; });
   for (std::uint32_t t = 0; t < tr.size(); ++t)
     if (d.rule == domain_rule::odd_nesting ? level[t] % 2 == 1 : level[t] >= 1)
-      tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] | in_domain_bit);
+      tr.flags(t) = static_cast<std::uint8_t>(tr.flags(t) | in_domain_bit);
   std::vector<std::uint32_t> stack;
   std::uint32_t rng = 777u;
   for (const point& h : d.holes) {
     if (!std::isfinite(h.x) || !std::isfinite(h.y)) continue;
     const std::uint32_t t = tr.locate(h, 0, rng);
     if (!tr.in_domain(t)) continue;
-    tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] & ~in_domain_bit);
+    tr.flags(t) = static_cast<std::uint8_t>(tr.flags(t) & ~in_domain_bit);
     stack.assign(1, t);
     while (!stack.empty()) {
       const std::uint32_t f = stack.back();
       stack.pop_back();
       for (int i = 0; i < 3; ++i) {
-        const ref_t n = tr.adj[f][i];
+        const ref_t n = tr.adj(f)[i];
         if (n == no_ref || tr.constrained(f, i) || !tr.in_domain(ref_tri(n))) continue;
-        tr.flags[ref_tri(n)] = static_cast<std::uint8_t>(tr.flags[ref_tri(n)] & ~in_domain_bit);
+        tr.flags(ref_tri(n)) = static_cast<std::uint8_t>(tr.flags(ref_tri(n)) & ~in_domain_bit);
         stack.push_back(ref_tri(n));
       }
     }
   }
+}
+
+/// Reserves the arrays for the mesh an area bound of max_area makes of the marked domain (about
+/// its area / (0.656 max_area) triangles, half as many vertices; at most 2^26 triangles), so
+/// that they are not copied as they grow: growing by doubling copied them and touched twice
+/// their final memory. A finer sizing field only makes them grow past the reservation.
+inline void reserve_for_area_bound(triangulation& tr, std::vector<index_t>& vertex_ids,
+                                   double max_area) {
+  if (!(max_area > 0) || !std::isfinite(max_area)) return;
+  double area = 0;
+  for (std::uint32_t t = 0; t < tr.size(); ++t)
+    if (tr.in_domain(t)) area += triangle_area(tr.at(t, 0), tr.at(t, 1), tr.at(t, 2));
+  const double triangles = std::min(1.05 * area / (0.656 * max_area), 67108864.0);
+  const auto slots = tr.slots.size() + static_cast<std::size_t>(triangles);
+  const auto vertices = tr.pts.size() + static_cast<std::size_t>(triangles / 2);
+  tr.slots.reserve(slots);
+  tr.pts.reserve(vertices);
+  tr.vertex_tri.reserve(vertices);
+  vertex_ids.reserve(vertices);
 }
 
 /// The constrained Delaunay triangulation of d with its domain marked.

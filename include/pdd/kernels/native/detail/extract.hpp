@@ -31,11 +31,11 @@ inline mesher_result extract(const triangulation& tr, const segment_ids& ids, co
   }
   for (std::uint32_t t = 0; t < tr.size(); ++t) {
     if (!tr.in_domain(t)) continue;
-    m.triangles.push_back({out(tr.corner[t][0]), out(tr.corner[t][1]), out(tr.corner[t][2])});
+    m.triangles.push_back({out(tr.corner(t)[0]), out(tr.corner(t)[1]), out(tr.corner(t)[2])});
     for (int i = 0; i < 3; ++i) {
-      const ref_t nb = tr.adj[t][i];
+      const ref_t nb = tr.adj(t)[i];
       if (!tr.constrained(t, i) || (tr.in_domain(ref_tri(nb)) && ref_tri(nb) < t)) continue;
-      const index_t a = tr.corner[t][next3(i)], b = tr.corner[t][prev3(i)];
+      const index_t a = tr.corner(t)[next3(i)], b = tr.corner(t)[prev3(i)];
       m.segments.push_back(
           {std::min(out(a), out(b)), std::max(out(a), out(b)), marker_of(ids.of_edge(a, b))});
     }

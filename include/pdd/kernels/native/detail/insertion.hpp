@@ -30,10 +30,10 @@ public:
       const std::uint32_t t = stack_.back();
       stack_.pop_back();
       for (int i = 0; i < 3; ++i) {
-        const ref_t n = tr.adj[t][i];
+        const ref_t n = tr.adj(t)[i];
         if (n == no_ref || tr.constrained(t, i)) continue;
         const std::uint32_t u = ref_tri(n);
-        if ((tr.flags[u] & in_cavity_bit) == 0 &&
+        if ((tr.flags(u) & in_cavity_bit) == 0 &&
             in_circle(tr.at(u, 0), tr.at(u, 1), tr.at(u, 2), p))
           add(tr, u);
       }
@@ -68,7 +68,7 @@ public:
           if (!on_boundary(tr, t, i)) continue;
           if (orient(tr.at(t, next3(i)), tr.at(t, prev3(i)), p) > 0) continue;
           if (k < seeds) return false;
-          tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] & ~in_cavity_bit);
+          tr.flags(t) = static_cast<std::uint8_t>(tr.flags(t) & ~in_cavity_bit);
           members_.erase(members_.begin() + static_cast<std::ptrdiff_t>(k));
           changed = true;
         }
@@ -96,8 +96,8 @@ public:
     }
     for (std::size_t j = 0; j < fan_.size(); ++j) {
       const std::uint32_t t = created_[j], m = created_[fan_at_[fan_[j].w]];
-      tr.adj[t][1] = make_ref(m, 2);
-      tr.adj[m][2] = make_ref(t, 1);
+      tr.adj(t)[1] = make_ref(m, 2);
+      tr.adj(m)[2] = make_ref(t, 1);
       if (crossing_ != no_ref && (fan_[j].w == split_a_ || fan_[j].w == split_b_)) {
         tr.set_constrained(t, 1, true);
         tr.set_constrained(m, 2, true);
@@ -114,7 +114,7 @@ public:
   /// Forgets the cavity (clears the marks).
   void clear(triangulation& tr) {
     for (const std::uint32_t t : members_)
-      tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] & ~in_cavity_bit);
+      tr.flags(t) = static_cast<std::uint8_t>(tr.flags(t) & ~in_cavity_bit);
     members_.clear();
     stack_.clear();
   }
@@ -127,18 +127,18 @@ private:
   };
 
   void add(triangulation& tr, std::uint32_t t) {
-    tr.flags[t] = static_cast<std::uint8_t>(tr.flags[t] | in_cavity_bit);
+    tr.flags(t) = static_cast<std::uint8_t>(tr.flags(t) | in_cavity_bit);
     members_.push_back(t);
     stack_.push_back(t);
   }
   bool is_crossing_twin(const triangulation& tr, std::uint32_t t, int i) const {
-    return crossing_ != no_ref && tr.adj[t][i] == crossing_;
+    return crossing_ != no_ref && tr.adj(t)[i] == crossing_;
   }
   /// Edge i of cavity triangle t is on the boundary: no cavity triangle behind it, or a
   /// constrained edge (other than the crossing one) with cavity on both sides.
   bool on_boundary(const triangulation& tr, std::uint32_t t, int i) const {
-    const ref_t n = tr.adj[t][i];
-    if (n == no_ref || (tr.flags[ref_tri(n)] & in_cavity_bit) == 0) return true;
+    const ref_t n = tr.adj(t)[i];
+    if (n == no_ref || (tr.flags(ref_tri(n)) & in_cavity_bit) == 0) return true;
     return tr.constrained(t, i) && make_ref(t, i) != crossing_ && !is_crossing_twin(tr, t, i);
   }
   void collect_boundary(const triangulation& tr) {
@@ -146,8 +146,8 @@ private:
     for (const std::uint32_t t : members_)
       for (int i = 0; i < 3; ++i)
         if (on_boundary(tr, t, i))
-          fan_.push_back({tr.corner[t][next3(i)], tr.corner[t][prev3(i)], tr.adj[t][i],
-                          static_cast<std::uint8_t>((tr.flags[t] & in_domain_bit) |
+          fan_.push_back({tr.corner(t)[next3(i)], tr.corner(t)[prev3(i)], tr.adj(t)[i],
+                          static_cast<std::uint8_t>((tr.flags(t) & in_domain_bit) |
                                                     (tr.constrained(t, i) ? 1 : 0))});
   }
 

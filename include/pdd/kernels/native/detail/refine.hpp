@@ -97,7 +97,7 @@ public:
     for (;;) {
       split_encroached();
       if (!bad_.pop(e)) break;
-      const auto& now = tr_.corner[e.t];
+      const auto& now = tr_.corner(e.t);
       if (now[0] != e.c[0] || now[1] != e.c[1] || now[2] != e.c[2] || !tr_.in_domain(e.t)) continue;
       const quality q = measure(e.t);
       if (q.bucket < 0 || (!q.over_area && at_small_input_angle(e.t))) continue;
@@ -130,13 +130,13 @@ private:
 
   void push_if_bad(std::uint32_t t) {
     const quality q = measure(t);
-    if (q.bucket >= 0) bad_.push(q.bucket, {t, tr_.corner[t]});
+    if (q.bucket >= 0) bad_.push(q.bucket, {t, tr_.corner(t)});
   }
 
   /// A vertex on a domain side of constrained edge i of t encroaches it (encroaches).
   bool encroached(std::uint32_t t, int i) const {
     if (tr_.in_domain(t) && encroaches(t, i, tr_.at(t, i))) return true;
-    const ref_t n = tr_.adj[t][i];
+    const ref_t n = tr_.adj(t)[i];
     return n != no_ref && tr_.in_domain(ref_tri(n)) &&
            encroaches(t, i, tr_.at(ref_tri(n), ref_edge(n)));
   }
@@ -151,14 +151,14 @@ private:
 
   void queue_if_encroached(std::uint32_t t, int i) {
     if (tr_.constrained(t, i) && encroached(t, i))
-      segments_.emplace_back(tr_.corner[t][next3(i)], tr_.corner[t][prev3(i)]);
+      segments_.emplace_back(tr_.corner(t)[next3(i)], tr_.corner(t)[prev3(i)]);
   }
 
   void scan() {
     for (std::uint32_t t = 0; t < tr_.size(); ++t) {
       if (tr_.in_domain(t)) push_if_bad(t);
       for (int i = 0; i < 3; ++i)
-        if (tr_.adj[t][i] != no_ref && ref_tri(tr_.adj[t][i]) > t) queue_if_encroached(t, i);
+        if (tr_.adj(t)[i] != no_ref && ref_tri(tr_.adj(t)[i]) > t) queue_if_encroached(t, i);
     }
   }
 
@@ -185,7 +185,7 @@ private:
   void split_segment(ref_t r) {
     const std::uint32_t t = ref_tri(r);
     const int i = ref_edge(r);
-    const index_t a = tr_.corner[t][next3(i)], b = tr_.corner[t][prev3(i)];
+    const index_t a = tr_.corner(t)[next3(i)], b = tr_.corner(t)[prev3(i)];
     const point m = split_point(tr_.pts[a], ids_.is_input(a), tr_.pts[b], ids_.is_input(b));
     const index_t seg = ids_.of_edge(a, b);
     if ((m.x == tr_.pts[a].x && m.y == tr_.pts[a].y) ||
@@ -195,7 +195,7 @@ private:
                                              "floating-point resolution (the bounds ask for too "
                                              "fine a mesh, or two segments meet at too small an "
                                              "angle)");
-    cav_.grow(tr_, m, {t, ref_tri(tr_.adj[t][i])}, r);
+    cav_.grow(tr_, m, {t, ref_tri(tr_.adj(t)[i])}, r);
     if (!cav_.make_star_shaped(tr_, m, 2))
       throw meshing_error(-1, "internal error: split point of segment " + std::to_string(seg) +
                                   " is not visible from its segment");
@@ -219,8 +219,8 @@ private:
     if (!enc.empty()) {
       forced_.clear();
       for (const ref_t r : enc)
-        forced_.emplace_back(tr_.corner[ref_tri(r)][next3(ref_edge(r))],
-                             tr_.corner[ref_tri(r)][prev3(ref_edge(r))]);
+        forced_.emplace_back(tr_.corner(ref_tri(r))[next3(ref_edge(r))],
+                             tr_.corner(ref_tri(r))[prev3(ref_edge(r))]);
       cav_.clear(tr_);
       for (const auto& s : forced_)
         force_split(s);
@@ -252,7 +252,7 @@ private:
       const double l = squared_distance(tr_.at(t, next3(i)), tr_.at(t, prev3(i)));
       if (l < shortest) shortest = l, k = i;
     }
-    const index_t p = tr_.corner[t][next3(k)], q = tr_.corner[t][prev3(k)];
+    const index_t p = tr_.corner(t)[next3(k)], q = tr_.corner(t)[prev3(k)];
     const index_t sp = ids_.of_vertex[p], sq = ids_.of_vertex[q];
     if (sp == no_index || sq == no_index || sp == sq) return false;
     const segment &x = d_.segments[sp], &y = d_.segments[sq];

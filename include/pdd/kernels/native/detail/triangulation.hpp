@@ -61,48 +61,58 @@ inline bool in_diametral_disk(const point& a, const point& b, const point& p) {
   return CGAL::angle(cp(a), cp(p), cp(b)) != CGAL::ACUTE;
 }
 
+/// One triangle slot: corners, neighbour references and flag bits side by side, so that
+/// reading a neighbour's corners and flags (the cavity search) touches one cache line. 32
+/// bytes, aligned to 32: two slots to a cache line, never one across two.
+struct alignas(32) triangle_slot {
+  std::array<index_t, 3> corner;
+  std::array<ref_t, 3> adj;
+  std::uint8_t flags;
+};
+static_assert(sizeof(triangle_slot) == 32);
+
 /// The triangulation. Triangle slots are never freed: a cavity of k triangles is replaced by
 /// k + 2 triangles in its own k slots and two new ones, and a flip rewrites two slots.
 struct triangulation {
   std::vector<point> pts;
-  std::vector<std::array<index_t, 3>> corner;
-  std::vector<std::array<ref_t, 3>> adj;
-  std::vector<std::uint8_t> flags;
+  std::vector<triangle_slot> slots;
   /// A triangle incident to each vertex (kept current by every write).
   std::vector<std::uint32_t> vertex_tri;
 
-  std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(corner.size()); }
-  bool constrained(std::uint32_t t, int i) const noexcept { return (flags[t] >> i & 1u) != 0; }
-  bool in_domain(std::uint32_t t) const noexcept { return (flags[t] & in_domain_bit) != 0; }
+  std::uint32_t size() const noexcept { return static_cast<std::uint32_t>(slots.size()); }
+  std::array<index_t, 3>& corner(std::uint32_t t) noexcept { return slots[t].corner; }
+  const std::array<index_t, 3>& corner(std::uint32_t t) const noexcept { return slots[t].corner; }
+  std::array<ref_t, 3>& adj(std::uint32_t t) noexcept { return slots[t].adj; }
+  const std::array<ref_t, 3>& adj(std::uint32_t t) const noexcept { return slots[t].adj; }
+  std::uint8_t& flags(std::uint32_t t) noexcept { return slots[t].flags; }
+  std::uint8_t flags(std::uint32_t t) const noexcept { return slots[t].flags; }
+  bool constrained(std::uint32_t t, int i) const noexcept { return (flags(t) >> i & 1u) != 0; }
+  bool in_domain(std::uint32_t t) const noexcept { return (flags(t) & in_domain_bit) != 0; }
   void set_constrained(std::uint32_t t, int i, bool on) noexcept {
     const auto bit = static_cast<std::uint8_t>(1u << i);
-    flags[t] = static_cast<std::uint8_t>(on ? flags[t] | bit : flags[t] & ~bit);
+    flags(t) = static_cast<std::uint8_t>(on ? flags(t) | bit : flags(t) & ~bit);
   }
   /// Sets edge i of t and the neighbour's copy of it constrained.
   void constrain(std::uint32_t t, int i) noexcept {
     set_constrained(t, i, true);
-    if (adj[t][i] != no_ref) set_constrained(ref_tri(adj[t][i]), ref_edge(adj[t][i]), true);
+    if (adj(t)[i] != no_ref) set_constrained(ref_tri(adj(t)[i]), ref_edge(adj(t)[i]), true);
   }
-  const point& at(std::uint32_t t, int i) const noexcept { return pts[corner[t][i]]; }
+  const point& at(std::uint32_t t, int i) const noexcept { return pts[corner(t)[i]]; }
   /// The index of vertex v among t's corners (v must be one).
   int index_of(std::uint32_t t, index_t v) const noexcept {
-    return corner[t][0] == v ? 0 : corner[t][1] == v ? 1 : 2;
+    return corner(t)[0] == v ? 0 : corner(t)[1] == v ? 1 : 2;
   }
 
   /// Writes triangle t and the back references of its neighbours.
   void write(std::uint32_t t, std::array<index_t, 3> c, std::array<ref_t, 3> n, std::uint8_t f) {
-    corner[t] = c;
-    adj[t] = n;
-    flags[t] = f;
+    slots[t] = {c, n, f};
     for (int i = 0; i < 3; ++i) {
       vertex_tri[c[i]] = t;
-      if (n[i] != no_ref) adj[ref_tri(n[i])][ref_edge(n[i])] = make_ref(t, i);
+      if (n[i] != no_ref) adj(ref_tri(n[i]))[ref_edge(n[i])] = make_ref(t, i);
     }
   }
   std::uint32_t new_slot() {
-    corner.push_back({dead, dead, dead});
-    adj.push_back({no_ref, no_ref, no_ref});
-    flags.push_back(0);
+    slots.push_back({{dead, dead, dead}, {no_ref, no_ref, no_ref}, 0});
     return size() - 1;
   }
 
@@ -128,16 +138,16 @@ struct triangulation {
   /// Flips edge i of t (unconstrained, its quadrilateral strictly convex). t = (p, q, r) with
   /// edge i = (q, r), its neighbour u = (s, r, q); afterwards t = (p, q, s), u = (s, r, p).
   void flip(std::uint32_t t, int i) {
-    const ref_t nb = adj[t][i];
+    const ref_t nb = adj(t)[i];
     const std::uint32_t u = ref_tri(nb);
     const int j = ref_edge(nb);
-    const index_t p = corner[t][i], q = corner[t][next3(i)], r = corner[t][prev3(i)];
-    const index_t s = corner[u][j];
-    const ref_t n_q = adj[t][next3(i)], n_r = adj[t][prev3(i)];
-    const ref_t m_r = adj[u][next3(j)], m_q = adj[u][prev3(j)];
+    const index_t p = corner(t)[i], q = corner(t)[next3(i)], r = corner(t)[prev3(i)];
+    const index_t s = corner(u)[j];
+    const ref_t n_q = adj(t)[next3(i)], n_r = adj(t)[prev3(i)];
+    const ref_t m_r = adj(u)[next3(j)], m_q = adj(u)[prev3(j)];
     const bool c_nq = constrained(t, next3(i)), c_nr = constrained(t, prev3(i));
     const bool c_mr = constrained(u, next3(j)), c_mq = constrained(u, prev3(j));
-    const auto keep = static_cast<std::uint8_t>(flags[t] & in_domain_bit);
+    const auto keep = static_cast<std::uint8_t>(flags(t) & in_domain_bit);
     const auto bits = [](bool a, bool b, bool c) {
       return static_cast<std::uint8_t>((a ? 1 : 0) | (b ? 2 : 0) | (c ? 4 : 0));
     };
@@ -153,20 +163,20 @@ struct triangulation {
     std::uint32_t t = start;
     do {
       const int k = index_of(t, a);
-      if (corner[t][next3(k)] == b) return make_ref(t, prev3(k));
-      const ref_t n = adj[t][prev3(k)]; // across edge (a, corner k+1): clockwise around a
+      if (corner(t)[next3(k)] == b) return make_ref(t, prev3(k));
+      const ref_t n = adj(t)[prev3(k)]; // across edge (a, corner k+1): clockwise around a
       if (n == no_ref) break;
       t = ref_tri(n);
     } while (t != start);
     // Open fan (bounding vertex): the other direction.
     t = start;
     for (;;) {
-      const ref_t n = adj[t][next3(index_of(t, a))];
+      const ref_t n = adj(t)[next3(index_of(t, a))];
       if (n == no_ref) return no_ref;
       t = ref_tri(n);
       if (t == start) return no_ref;
       const int k = index_of(t, a);
-      if (corner[t][next3(k)] == b) return make_ref(t, prev3(k));
+      if (corner(t)[next3(k)] == b) return make_ref(t, prev3(k));
     }
   }
 
@@ -180,8 +190,8 @@ struct triangulation {
       bool moved = false;
       for (int e = 0; e < 3 && !moved; ++e) {
         const int i = (k + e) % 3;
-        if (adj[t][i] != no_ref && orient(at(t, next3(i)), at(t, prev3(i)), p) < 0) {
-          t = ref_tri(adj[t][i]);
+        if (adj(t)[i] != no_ref && orient(at(t, next3(i)), at(t, prev3(i)), p) < 0) {
+          t = ref_tri(adj(t)[i]);
           moved = true;
         }
       }
