@@ -38,9 +38,10 @@ namespace pdd::native {
 /// `segments` the mesh edges on input segments with their markers). Deterministic: the same
 /// input gives bitwise the same result on every run and thread.
 ///
-/// Memory: 25 bytes per triangle slot (corners, packed neighbours, flag bits) and 24 per
-/// vertex (coordinates, a triangle reference, the segment of a Steiner vertex), plus the
-/// bad-triangle queue.
+/// Memory: 32 bytes per triangle slot (corners, packed neighbours, flag bits, aligned so that
+/// a slot is one cache line's half) and 24 per vertex (coordinates, a triangle reference, the
+/// segment of a Steiner vertex), plus the bad-triangle queue; with an area bound the arrays
+/// are reserved for the expected mesh once instead of growing by copies.
 ///
 /// Thread-safety: the object is stateless; any number of `mesh` calls may run concurrently.
 struct mesher {

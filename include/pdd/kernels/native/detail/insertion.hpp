@@ -24,6 +24,7 @@ public:
             ref_t crossing) {
     clear(tr);
     crossing_ = crossing;
+    bounded_by_segment_ = false;
     for (const std::uint32_t s : seeds)
       add(tr, s);
     while (!stack_.empty()) {
@@ -31,7 +32,10 @@ public:
       stack_.pop_back();
       for (int i = 0; i < 3; ++i) {
         const ref_t n = tr.adj(t)[i];
-        if (n == no_ref || tr.constrained(t, i)) continue;
+        if (n == no_ref || tr.constrained(t, i)) {
+          bounded_by_segment_ = true;
+          continue;
+        }
         const std::uint32_t u = ref_tri(n);
         if ((tr.flags(u) & in_cavity_bit) == 0 &&
             in_circle(tr.at(u, 0), tr.at(u, 1), tr.at(u, 2), p))
@@ -47,6 +51,7 @@ public:
   const std::vector<ref_t>& encroached_segments(const triangulation& tr, const point& p,
                                                 Encroaches encroaches) {
     encroached_.clear();
+    if (!bounded_by_segment_) return encroached_;
     for (const std::uint32_t t : members_)
       for (int i = 0; i < 3; ++i) {
         if (!tr.constrained(t, i) || make_ref(t, i) == crossing_ || is_crossing_twin(tr, t, i))
@@ -59,7 +64,13 @@ public:
 
   /// Removes triangles until every boundary edge sees p strictly on the cavity's side.
   /// \returns false when a seed would have to go (p is not visible from the seeds).
+  /// A cavity that no segment (nor the bounding triangle's outer edge) bounds or crosses is
+  /// star-shaped already: across each boundary edge e, unconstrained and so locally Delaunay,
+  /// the open circumdisk of the cavity triangle beyond e's line (or on e itself) lies in the
+  /// open circumdisk of the triangle outside, which p would then have entered; so p is
+  /// strictly on the cavity's side of e, and no test is needed.
   bool make_star_shaped(triangulation& tr, const point& p, std::size_t seeds) {
+    if (!bounded_by_segment_) return true;
     for (bool changed = true; changed;) {
       changed = false;
       for (std::size_t k = 0; k < members_.size() && !changed; ++k) {
@@ -81,28 +92,23 @@ public:
   /// boundary edges. Constrained boundary edges stay constrained; each new triangle inherits
   /// the in-domain flag of the triangle whose boundary edge it takes. With a crossing edge
   /// (a, b), the new edges (v, a) and (v, b) are constrained. `created()` lists the new
-  /// triangles. Complexity O(cavity size).
+  /// triangles. Complexity O(cavity size) (a small fan is linked by search, a large one
+  /// through a table by vertex).
   void commit(triangulation& tr, index_t v) {
     if (tr.vertex_tri.size() < tr.pts.size()) tr.vertex_tri.resize(tr.pts.size());
-    if (fan_at_.size() < tr.pts.size()) fan_at_.resize(tr.pts.size() * 2);
     collect_boundary(tr);
     created_.clear();
     for (std::size_t j = 0; j < fan_.size(); ++j)
       created_.push_back(j < members_.size() ? members_[j] : tr.new_slot());
     for (std::size_t j = 0; j < fan_.size(); ++j) {
       const fan_edge& e = fan_[j];
-      tr.write(created_[j], {v, e.u, e.w}, {e.outside, no_ref, no_ref}, e.flags);
-      fan_at_[e.u] = static_cast<std::uint32_t>(j);
+      const std::uint32_t t = created_[j];
+      tr.slots[t] = {{v, e.u, e.w}, {e.outside, no_ref, no_ref}, e.flags};
+      if (e.outside != no_ref) tr.adj(ref_tri(e.outside))[ref_edge(e.outside)] = make_ref(t, 0);
+      tr.vertex_tri[e.u] = t;
     }
-    for (std::size_t j = 0; j < fan_.size(); ++j) {
-      const std::uint32_t t = created_[j], m = created_[fan_at_[fan_[j].w]];
-      tr.adj(t)[1] = make_ref(m, 2);
-      tr.adj(m)[2] = make_ref(t, 1);
-      if (crossing_ != no_ref && (fan_[j].w == split_a_ || fan_[j].w == split_b_)) {
-        tr.set_constrained(t, 1, true);
-        tr.set_constrained(m, 2, true);
-      }
-    }
+    tr.vertex_tri[v] = created_.front();
+    link_fan(tr);
     members_.clear();
   }
 
@@ -141,6 +147,37 @@ private:
     if (n == no_ref || (tr.flags(ref_tri(n)) & in_cavity_bit) == 0) return true;
     return tr.constrained(t, i) && make_ref(t, i) != crossing_ && !is_crossing_twin(tr, t, i);
   }
+  /// The fan triangle whose edge (v, u) has u == w: a search in a small fan, a table by
+  /// vertex in a large one (a random access into an array as long as the vertices).
+  template <class Find>
+  void link_each(triangulation& tr, Find find) {
+    for (std::size_t j = 0; j < fan_.size(); ++j) {
+      const std::uint32_t t = created_[j], m = created_[find(fan_[j].w)];
+      tr.adj(t)[1] = make_ref(m, 2);
+      tr.adj(m)[2] = make_ref(t, 1);
+      if (crossing_ != no_ref && (fan_[j].w == split_a_ || fan_[j].w == split_b_)) {
+        tr.set_constrained(t, 1, true);
+        tr.set_constrained(m, 2, true);
+      }
+    }
+  }
+  /// Links the fan's triangles to each other: triangle j = (v, u_j, w_j) meets the one whose
+  /// u is w_j across the edge (v, w_j).
+  void link_fan(triangulation& tr) {
+    if (fan_.size() <= 32) {
+      link_each(tr, [this](index_t w) {
+        std::size_t m = 0;
+        while (fan_[m].u != w)
+          ++m;
+        return m;
+      });
+      return;
+    }
+    if (fan_at_.size() < tr.pts.size()) fan_at_.resize(tr.pts.size() * 2);
+    for (std::size_t j = 0; j < fan_.size(); ++j)
+      fan_at_[fan_[j].u] = static_cast<std::uint32_t>(j);
+    link_each(tr, [this](index_t w) { return fan_at_[w]; });
+  }
   void collect_boundary(const triangulation& tr) {
     fan_.clear();
     for (const std::uint32_t t : members_)
@@ -155,6 +192,7 @@ private:
   std::vector<fan_edge> fan_;
   std::vector<ref_t> encroached_;
   ref_t crossing_ = no_ref;
+  bool bounded_by_segment_ = false; ///< grow met a constrained or outer edge
   index_t split_a_ = no_index, split_b_ = no_index;
 };
 

@@ -2,7 +2,7 @@
 /// Ruppert's Delaunay refinement (Ruppert 1995; Shewchuk 1997 ch. 3, 2002) on the native
 /// triangulation, restricted to the domain: encroached subsegments are split first (at the
 /// midpoint, or on a concentric shell next to an input vertex); then a bad triangle (over its
-/// area bound first, the largest excess first; then the skinny ones, the shortest edge first,
+/// area bound first, the last queued first; then the skinny ones, the shortest edge first,
 /// from a bucketed queue) gets its refinement point (detail::off_centre), unless that point
 /// encroaches a subsegment, which is split instead and the triangle reconsidered. A subsegment
 /// is encroached only by a vertex on a domain side of it (as in pdd::cgal::mesher), in its
@@ -37,27 +37,33 @@
 
 namespace pdd::detail::native_mesh {
 
-/// The bad-triangle queue: 32 buckets of over-area triangles (by the binary logarithm of their
-/// excess, largest first), then 2200 of skinny ones by the binary logarithm of their shortest
-/// edge's square (shortest first), the order of Triangle 1.6's queue. The smallest angle
-/// first, as before, made many more triangles near the angle bounds Triangle is used at, since
-/// an off-centre refines a short edge's neighbourhood once where the worst-angle order reaches
-/// it through larger triangles first: 20,000 random points in the unit square, no area bound,
-/// 187,569 against Triangle's 142,125 at 32.5 deg and 441,368 against 171,726 at 33.8 deg;
-/// 145,702 and 179,299 now (65,124 against 65,034 at 20.7 deg, 65,430 before). Within a bucket
-/// the last triangle queued is refined first: the new triangles of an insertion are refined
-/// next, while their memory is in cache (at 1M triangles this took the kernel from 0.70 to 0.41
-/// us per triangle against first-in first-out, for 1.5% more triangles). Entries carry the
-/// corners so that a rewritten slot is recognised as stale.
+/// The bad-triangle queue: one bucket of over-area triangles, then 2200 of skinny ones by the
+/// binary logarithm of their shortest edge's square (shortest first, the order of Triangle
+/// 1.6's queue). The smallest angle first, as before, made many more triangles near the angle
+/// bounds Triangle is used at, since an off-centre refines a short edge's neighbourhood once
+/// where the worst-angle order reaches it through larger triangles first: 20,000 random points
+/// in the unit square, no area bound, 187,569 against Triangle's 142,125 at 32.5 deg and
+/// 441,368 against 171,726 at 33.8 deg; 145,702 and 179,299 now.
+///
+/// Within a bucket the last triangle queued is refined first, so the new triangles of an
+/// insertion are refined next, while their memory is in cache. Over-area triangles used to go
+/// to 32 buckets by their excess, largest first: that refines the whole domain one halving of
+/// the area at a time, each sweep over cold memory, with every triangle of a level waiting in
+/// the queue (on the pipe at 4M triangles the queue's growth was a third of the run's page
+/// faults); one last-in first-out bucket refines depth first, each region down to its bound
+/// while it is in cache (the kernel's time per triangle fell by a fifth, for about 1% fewer
+/// triangles). Entries carry the corners so that a rewritten slot is recognised as stale.
 class bad_queue {
 public:
   struct entry {
     std::uint32_t t;
     std::array<index_t, 3> c;
   };
-  static constexpr int buckets = 32 + 2200;
+  static constexpr int buckets = 1 + 2200;
+  /// The over-area bucket.
+  static constexpr int over_area = 0;
   /// The first skinny bucket; the squared shortest edge 2^e goes to skinny + e + 1100.
-  static constexpr int skinny = 32;
+  static constexpr int skinny = 1;
 
   void push(int bucket, const entry& e) {
     q_[static_cast<std::size_t>(bucket)].push_back(e);
@@ -115,17 +121,13 @@ private:
     const point &a = tr_.at(t, 0), &b = tr_.at(t, 1), &c = tr_.at(t, 2);
     const double bound =
         std::min(max_area_, static_cast<double>(sizing_.area_at(triangle_centroid(a, b, c))));
-    const double size = std::isinf(bound) ? 0.0 : triangle_area(a, b, c) / bound;
-    if (size > 1.0) return {31 - std::min(31, std::ilogb(size)), true}; // floor(log2(size))
-    const double sine = squared_sine_min_angle(a, b, c);
-    if (sine < shape_bound_) {
-      const auto l2 = [](const point& p, const point& q) {
-        return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
-      };
-      const double shortest = std::min({l2(a, b), l2(b, c), l2(c, a)});
-      return {bad_queue::skinny + std::clamp(std::ilogb(shortest) + 1100, 0, 2199), false};
-    }
-    return {};
+    if (triangle_area(a, b, c) > bound) return {bad_queue::over_area, true};
+    if (!(squared_sine_min_angle(a, b, c) < shape_bound_)) return {};
+    const auto l2 = [](const point& p, const point& q) {
+      return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
+    };
+    const double shortest = std::min({l2(a, b), l2(b, c), l2(c, a)});
+    return {bad_queue::skinny + std::clamp(std::ilogb(shortest) + 1100, 0, 2199), false};
   }
 
   void push_if_bad(std::uint32_t t) {

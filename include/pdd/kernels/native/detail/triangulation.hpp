@@ -1,7 +1,7 @@
 /// \file triangulation.hpp
-/// The triangle-array triangulation of pdd::native::mesher: flat arrays of vertex coordinates,
-/// triangle corners, neighbours with the neighbour's edge packed in, and per-triangle flag
-/// bits (constrained edges, in-domain); exact predicates from CGAL's Epick.
+/// The triangle-array triangulation of pdd::native::mesher: a flat array of vertex coordinates
+/// and one of triangle slots (corners, neighbours with the neighbour's edge packed in, flag
+/// bits: constrained edges, in-domain); exact predicates from CGAL's Epick.
 ///
 /// Conventions: corners are counter-clockwise; edge i of a triangle is the edge opposite its
 /// corner i, from corner i+1 to corner i+2 (mod 3). A neighbour reference packs the triangle
