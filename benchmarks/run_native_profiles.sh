@@ -8,9 +8,10 @@
 # Each run is pinned to CPU 0 and sampled at 2 kHz (perf record -F 2000, no call graphs: a
 # function's own samples; what the compiler inlined counts in its caller).
 #   pdd-mesh-old: the same pdd-mesh command with OLD_PDD_MESH, a pdd-mesh of another commit
-#             (benchmarks/build_at_commit.sh; native-kernel.md's is 3c0f6e4, before the
-#             statistics without trigonometry), when it is given.
-#   bash benchmarks/run_native_profiles.sh [BUILD_DIR] [OLD_PDD_MESH]
+#             (benchmarks/build_at_commit.sh), when it is given (not empty);
+#   kernel-old: the kernel command with OLD_BENCH_KERNEL, a bench_kernel of another commit
+#             (build_at_commit.sh COMMIT WORK_DIR bench_kernel), when it is given.
+#   bash benchmarks/run_native_profiles.sh [BUILD_DIR] [OLD_PDD_MESH] [OLD_BENCH_KERNEL]
 # Needs perf (Debian: linux-perf) and perf_event_paranoid <= 2. Raw data:
 # benchmarks/results/native-kernel-profiles.jsonl (first line: the provenance, then one line per
 # function over 0.5 % of a run's samples, with perf's full symbol); the tables are printed from
@@ -18,6 +19,7 @@
 set -euo pipefail
 build=${1:-build/release}
 old=${2:-}
+old_bench=${3:-}
 # shellcheck source=provenance.sh source-path=SCRIPTDIR
 source "$(dirname "$0")/provenance.sh"
 out=benchmarks/results/native-kernel-profiles.jsonl
@@ -52,6 +54,7 @@ with open(out, "a") as f:
 PY
 }
 profile kernel "$bench" pipe 1000000 20.7048 native
+[ -z "$old_bench" ] || profile kernel-old "$old_bench" pipe 1000000 20.7048 native
 pdd_mesh_args=(examples/data/pipe.poly --max-area 1.3e-6 --kernel native --threads 1 --quiet)
 profile pdd-mesh "$build/examples/drivers/pdd-mesh" "${pdd_mesh_args[@]}"
 [ -z "$old" ] || profile pdd-mesh-old "$old" "${pdd_mesh_args[@]}"
