@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 namespace pdd::test {
@@ -55,7 +56,7 @@ inline std::size_t expect_verified(const triangle_mesh& m, const pslg& d,
   EXPECT_TRUE(rep.ok()) << at << ": " << describe(rep);
   EXPECT_EQ(rep.delaunay_violations, 0u) << at;
   const shielding_statistics sh = compute_shielding_statistics(m, d);
-  EXPECT_GE(sh.min_angle_unshielded_deg, 20.7 - 1e-9) << at;
+  EXPECT_GE(sh.min_angle_unshielded_deg, std::min(criteria.min_angle_deg, 20.7) - 1e-9) << at;
   EXPECT_LT(sh.max_shield_angle_error_deg, 1e-6) << at;
   EXPECT_LE(compute_statistics(m).max_area, criteria.max_area) << at;
   return sh.shielded_triangles;

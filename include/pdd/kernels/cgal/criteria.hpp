@@ -14,12 +14,13 @@
 namespace pdd::cgal {
 
 /// Badness of a face: sin^2 of its smallest angle, its area over its area bound, and its
-/// shortest edge. Ordering (`q1 < q2`: q1 is refined first): faces over their area bound first,
-/// largest excess first (as CGAL's Delaunay_mesh_size_criteria_2); then the shortest edge first,
-/// the order of Triangle 1.6's queue. CGAL's order, the smallest angle first, made many more
-/// triangles near the angle bounds Triangle is used at (20,000 random points in the unit square,
-/// no area bound: 184,639 against Triangle's 142,125 at 32.5 deg), as in the native kernel
-/// (kernels/native/detail/refine.hpp, bad_queue).
+/// shortest edge. Ordering (`q1 < q2`: q1 before q2 in a priority queue): faces over their
+/// area bound first, largest excess first (as CGAL's Delaunay_mesh_size_criteria_2); then the
+/// shortest edge first, the order of Triangle 1.6's queue. (pdd::cgal::mesher's own queue takes
+/// the faces over their bound last in, first out instead, for locality: mesher_faces.hpp.) CGAL's
+/// order, the smallest angle first, made many more triangles near the angle bounds Triangle is used
+/// at (20,000 random points in the unit square, no area bound: 184,639 against Triangle's 142,125
+/// at 32.5 deg), as in the native kernel (kernels/native/detail/refine.hpp, bad_queue).
 struct face_quality {
   double sine = 1.0;     ///< sin^2 of the smallest angle
   double size = 0.0;     ///< area / area bound (0 when unbounded)

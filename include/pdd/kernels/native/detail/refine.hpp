@@ -115,13 +115,15 @@ private:
   struct quality {
     int bucket = -1; ///< queue bucket; -1: not bad
     bool over_area = false;
+    double excess = 0.0; ///< area / area bound, when over_area
   };
 
   quality measure(std::uint32_t t) const {
     const point &a = tr_.at(t, 0), &b = tr_.at(t, 1), &c = tr_.at(t, 2);
     const double bound =
         std::min(max_area_, static_cast<double>(sizing_.area_at(triangle_centroid(a, b, c))));
-    if (triangle_area(a, b, c) > bound) return {bad_queue::over_area, true};
+    const double area = triangle_area(a, b, c);
+    if (area > bound) return {bad_queue::over_area, true, area / bound};
     if (!(squared_sine_min_angle(a, b, c) < shape_bound_)) return {};
     const auto l2 = [](const point& p, const point& q) {
       return (p.x - q.x) * (p.x - q.x) + (p.y - q.y) * (p.y - q.y);
@@ -164,13 +166,27 @@ private:
     }
   }
 
-  /// New triangles: queue the bad ones and the encroached subsegments on their edges.
+  /// New triangles: queue the bad ones and the encroached subsegments on their edges. The
+  /// new triangles over their area bound go on the last-in first-out bucket the smallest excess
+  /// first, so that the largest is refined first: the depth-first order's locality with the
+  /// largest-first order's sizes (about 1 % fewer triangles than in fan order: the pipe at 4M
+  /// 4,068,872 against 4,105,287; Triangle 4,067,653; for about 3 % more time).
   void after_insertion() {
+    over_area_.clear();
     for (const std::uint32_t t : cav_.created()) {
-      if (tr_.in_domain(t)) push_if_bad(t);
+      if (tr_.in_domain(t)) {
+        const quality q = measure(t);
+        if (q.over_area)
+          over_area_.emplace_back(q.excess, t);
+        else if (q.bucket >= 0)
+          bad_.push(q.bucket, {t, tr_.corner(t)});
+      }
       for (int i = 0; i < 3; ++i)
         queue_if_encroached(t, i);
     }
+    std::sort(over_area_.begin(), over_area_.end());
+    for (const auto& [excess, t] : over_area_)
+      bad_.push(bad_queue::over_area, {t, tr_.corner(t)});
   }
 
   void split_encroached() {
@@ -278,6 +294,7 @@ private:
   const S& sizing_;
   bad_queue bad_;
   std::vector<std::pair<index_t, index_t>> segments_, forced_;
+  std::vector<std::pair<double, std::uint32_t>> over_area_; ///< after_insertion's scratch
 };
 
 } // namespace pdd::detail::native_mesh
