@@ -6,6 +6,7 @@
 /// end, is not visible from the point and stays: Chew's constrained Delaunay condition).
 #pragma once
 
+#include <pdd/errors.hpp>
 #include <pdd/kernels/native/detail/triangulation.hpp>
 
 #include <cstddef>
@@ -167,8 +168,11 @@ private:
     if (fan_.size() <= 32) {
       link_each(tr, [this](index_t w) {
         std::size_t m = 0;
-        while (fan_[m].u != w)
+        while (m < fan_.size() && fan_[m].u != w)
           ++m;
+        // The boundary of a cavity is closed: every edge's end starts another edge.
+        if (m == fan_.size())
+          throw meshing_error(-1, "internal error: a cavity's boundary is not closed");
         return m;
       });
       return;
