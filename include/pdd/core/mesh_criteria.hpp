@@ -72,4 +72,8 @@ struct mesh_criteria {
   double lens_cosine() const { return std::cos(2.0 * min_angle_deg * std::numbers::pi / 180.0); }
 };
 
+/// Mean triangle area of a quality mesh under a uniform area bound A, as a fraction of A
+/// (CGAL's kernel, 20.7 deg, measured on squares from 19K to 4M triangles: 0.655-0.659).
+inline constexpr double mean_triangle_area_fraction = 0.656;
+
 } // namespace pdd

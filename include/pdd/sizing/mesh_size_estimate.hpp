@@ -5,6 +5,7 @@
 #pragma once
 
 #include <pdd/concepts/sizing_field.hpp>
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/point.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/geometry/feature_gap.hpp>
@@ -17,10 +18,6 @@
 #include <string>
 
 namespace pdd {
-
-/// Mean triangle area of a quality mesh under a uniform area bound A, as a fraction of A
-/// (CGAL's kernel, 20.7 deg, measured on squares from 19K to 4M triangles: 0.655-0.659).
-inline constexpr double mean_triangle_area_fraction = 0.656;
 
 /// c in F_eff(x) = min(F(x), c gap(x)^2) where a vertex is one of the two features: the
 /// largest triangle area a quality mesh puts where the feature gap (pdd::feature_gap_field)

@@ -6,6 +6,7 @@
 /// (pdd::flood_levels: odd nesting level, less the regions of hole points).
 #pragma once
 
+#include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/core/triangle_measures.hpp>
 #include <pdd/core/triangulation_levels.hpp>
@@ -174,16 +175,18 @@ inline void mark_domain(triangulation& tr, const pslg& d) {
 }
 
 /// Reserves the arrays for the mesh an area bound of max_area makes of the marked domain (about
-/// its area / (0.656 max_area) triangles, half as many vertices; at most 2^26 triangles), so
-/// that they are not copied as they grow: growing by doubling copied them and touched twice
-/// their final memory. A finer sizing field only makes them grow past the reservation.
+/// its area / (pdd::mean_triangle_area_fraction max_area) triangles, half as many vertices; at most
+/// 2^26 triangles), so that they are not copied as they grow: growing by doubling copied them and
+/// touched twice their final memory. A finer sizing field only makes them grow past the
+/// reservation.
 inline void reserve_for_area_bound(triangulation& tr, std::vector<index_t>& vertex_ids,
                                    double max_area) {
   if (!(max_area > 0) || !std::isfinite(max_area)) return;
   double area = 0;
   for (std::uint32_t t = 0; t < tr.size(); ++t)
     if (tr.in_domain(t)) area += triangle_area(tr.at(t, 0), tr.at(t, 1), tr.at(t, 2));
-  const double triangles = std::min(1.05 * area / (0.656 * max_area), 67108864.0);
+  const double triangles =
+      std::min(1.05 * area / (mean_triangle_area_fraction * max_area), 67108864.0);
   const auto slots = tr.slots.size() + static_cast<std::size_t>(triangles);
   const auto vertices = tr.pts.size() + static_cast<std::size_t>(triangles / 2);
   tr.slots.reserve(slots);
