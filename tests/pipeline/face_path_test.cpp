@@ -45,7 +45,7 @@ pdd::generate_options options(double max_area, std::size_t subdomains) {
   o.criteria.max_area = max_area;
   o.subdomains = subdomains;
   o.threads = 2;
-  o.geometric_sizing = pdd::geometric_sizing_mode::on; // auto does not plan it yet
+  o.geometric_sizing = pdd::geometric_sizing_mode::on; // at every size (auto: from 20K)
   return o;
 }
 
@@ -101,6 +101,28 @@ TEST(FacePath, AutomaticNFallsBackToTheWholeDomainWhenTheEstimateExceedsTheBound
   EXPECT_GT(decoupled.statistics.subdomains, 1u);
   expect_verified(decoupled, g, max_area);
   EXPECT_GT(decoupled.mesh.triangles.size(), automatic.mesh.triangles.size());
+}
+
+// Geometric sizing auto plans the path for a requested N from planning.min_face_path_triangles
+// estimated triangles (the wedge at 0.003: about 41K) when a feature of a face is smaller than the
+// mesh, and leaves MADD from the faces below it: its rounds cost more than they save there.
+TEST(FacePath, GeometricSizingAutoPlansItForARequestedNFromTheSizeWhereItPays) {
+  const pdd::pslg g = thinning_wedge();
+  pdd::generate_options o = options(0.003, 4);
+  o.geometric_sizing = pdd::geometric_sizing_mode::automatic;
+  const pdd::generate_result planned = pdd::generate(g, o);
+  EXPECT_EQ(planned.statistics.path, "geometric") << planned.statistics.plan_reason;
+  EXPECT_NE(planned.statistics.plan_reason.find("of the faces smaller than the mesh"),
+            std::string::npos)
+      << planned.statistics.plan_reason;
+  expect_verified(planned, g, 0.003);
+  o.planning.min_face_path_triangles = 1e6;
+  const pdd::generate_result faces = pdd::generate(g, o);
+  EXPECT_EQ(faces.statistics.path, "graded") << faces.statistics.plan_reason;
+  EXPECT_NE(faces.statistics.plan_reason.find("planning.min_face_path_triangles"),
+            std::string::npos)
+      << faces.statistics.plan_reason;
+  EXPECT_LT(planned.mesh.triangles.size(), 0.7 * faces.mesh.triangles.size());
 }
 
 // Above Ruppert's bound the kernels split the path beside the small subdomains this path makes

@@ -85,12 +85,11 @@ inline std::vector<vertex_gap_sample> domain_vertex_gaps(const pslg& g, const ma
 }
 
 /// The input vertices whose own feature bound 4 sqrt2 (gap/2)^2 lies below min(max_area, f)
-/// there (a feature smaller than the mesh), the `cap` most binding first (ratio, then sample
-/// order), as the driver of slope `slope`; `found` receives how many.
-inline feature_driven_sizing tiny_feature_driver(const std::vector<vertex_gap_sample>& samples,
-                                                 const any_sizing& f, double max_area,
-                                                 std::size_t cap, double slope,
-                                                 std::size_t& found) {
+/// there (a feature smaller than the mesh), as (that bound / min(max_area, f), sample index),
+/// the most binding first (ratio, then sample order).
+inline std::vector<std::pair<double, std::size_t>>
+binding_features(const std::vector<vertex_gap_sample>& samples, const any_sizing& f,
+                 double max_area) {
   std::vector<std::pair<double, std::size_t>> binding;
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const double gap = samples[i].gap;
@@ -100,6 +99,16 @@ inline feature_driven_sizing tiny_feature_driver(const std::vector<vertex_gap_sa
     if (own < user) binding.emplace_back(own / user, i);
   }
   std::sort(binding.begin(), binding.end());
+  return binding;
+}
+
+/// The `cap` most binding features (binding_features) as the driver of slope `slope`; `found`
+/// receives how many.
+inline feature_driven_sizing tiny_feature_driver(const std::vector<vertex_gap_sample>& samples,
+                                                 const any_sizing& f, double max_area,
+                                                 std::size_t cap, double slope,
+                                                 std::size_t& found) {
+  std::vector<std::pair<double, std::size_t>> binding = binding_features(samples, f, max_area);
   binding.resize(std::min(binding.size(), cap));
   found = binding.size();
   std::vector<point> at;

@@ -137,7 +137,7 @@ inline planned_run plan_run(pslg domain, const generate_options& o, unsigned thr
       p.general_domain
           ? detail::choose_face_geometric_path(r.regions ? &*r.regions : nullptr, o,
                                                p.decoupling_criteria.max_area, p.subdomains,
-                                               p.reason)
+                                               p.estimate.triangles, p.reason)
           : detail::choose_geometric_path(r.domain, o, p.decoupling_criteria.max_area, p.subdomains,
                                           p.estimate.triangles, p.reason);
   if (p.subdomains > 1 && detail::small_angles_above_ruppert(r.domain, o.criteria, p.reason))

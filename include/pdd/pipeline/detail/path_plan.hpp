@@ -10,6 +10,7 @@
 #include <pdd/core/mesh_criteria.hpp>
 #include <pdd/core/pslg.hpp>
 #include <pdd/decoupling/geometric_decompose.hpp>
+#include <pdd/decoupling/tiny_features.hpp>
 #include <pdd/geometry/lfs.hpp>
 #include <pdd/madd/gradation_control.hpp>
 #include <pdd/madd/madd_options.hpp>
@@ -104,14 +105,19 @@ inline bool face_path_angle_ok(const mesh_criteria& c) {
 }
 
 /// Whether the geometric path is planned on a domain that is not one of closed loops, with
-/// regions `regions` (pdd::madd_start), for N = `subdomains`, `area_min` as above; appends the
-/// reason to `reason` (which says already why N); only where face_path_angle_ok. Unlike on
-/// closed loops, geometric sizing auto plans it for a requested N too: the faces are subdomains
-/// whatever N, so a small feature of a face sets k_i of that face and of its neighbours
-/// (relation 7.1) along every interface unless the decomposition is graded towards it
-/// (detail::face_geometric_decompose).
+/// regions `regions` (pdd::madd_start), for N = `subdomains`, `area_min` as above and `estimated`
+/// triangles; appends the reason to `reason` (which says already why N); only where
+/// face_path_angle_ok. Unlike on closed loops, geometric sizing auto plans it for a requested N
+/// too: the faces are subdomains whatever N, so a small feature of a face sets k_i of that face
+/// and of its neighbours (relation 7.1) along every interface unless the decomposition is graded
+/// towards it (detail::face_geometric_decompose). Auto needs planning.min_face_path_triangles
+/// and features of the faces smaller than the mesh (under min(max_area, field);
+/// binding_features), but not more than a tenth of the faces' vertices (at least
+/// geometric_loop.first_feature_cap): where more bind, the boundary itself is finer than the
+/// mesh (a wavy ring of 200K segments, benchmarks/run_general_planning.sh: 13.6 s of rounds,
+/// none cheaper than MADD's own decomposition).
 inline bool choose_face_geometric_path(const madd_start* regions, const generate_options& o,
-                                       double area_min, std::size_t subdomains,
+                                       double area_min, std::size_t subdomains, double estimated,
                                        std::string& reason) {
   const auto no = [&](const std::string& why) {
     reason += "; not the geometric path: " + why;
@@ -129,8 +135,21 @@ inline bool choose_face_geometric_path(const madd_start* regions, const generate
     reason += "; geometric sizing on";
     return true;
   }
-  return no("geometric sizing auto does not plan it on a general PSLG yet: its rounds made "
-            "small domains up to 10x slower to mesh (--geometric-sizing on plans it)");
+  if (!(estimated >= o.planning.min_face_path_triangles))
+    return no("estimated " + number_text(estimated) + " triangles, under " +
+              number_text(o.planning.min_face_path_triangles) +
+              " (planning.min_face_path_triangles): its rounds would cost more than they save");
+  const std::vector<vertex_gap_sample> gaps = region_vertex_gaps(*regions);
+  const std::size_t found = binding_features(gaps, o.sizing, area_min).size();
+  if (found == 0) return no("no feature of a face is smaller than the mesh");
+  const auto most = std::max<std::size_t>(o.geometric_loop.first_feature_cap, gaps.size() / 10);
+  if (found > most)
+    return no(std::to_string(found) + " of the faces' " + std::to_string(gaps.size()) +
+              " vertices are features smaller than the mesh (more than " + std::to_string(most) +
+              "): a boundary finer than the mesh, which the rounds cannot grade towards");
+  reason += "; " + std::to_string(found) +
+            " feature(s) of the faces smaller than the mesh: the geometric path on the faces";
+  return true;
 }
 
 /// The geometric loop's cap on subdomains for a plan of n: the plan's `cap`, at least 4n.
