@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Layered sections whose layers thin out (issue 36 item 1): the over-refinement of the decoupled
 # path against the whole-domain mesh (pdd-mesh --subdomains 1), for requested N (4, 16) and the
-# automatic plan, with the geometric path on the faces (--geometric-sizing on: the default under
-# auto from 8386a1e to d0ef1d0, opt-in since) and with --geometric-sizing off (MADD from the
-# faces alone, what such a domain got before and gets by default). Inputs:
+# automatic plan, with the default --geometric-sizing auto (the geometric path on the faces from
+# 20,000 estimated triangles, planning.min_face_path_triangles; it was the default at every size
+# from 8386a1e to d0ef1d0, opt-in from d0ef1d0 to 633b68c) and with --geometric-sizing off (MADD
+# from the faces alone). Inputs:
 #  - wedge: a 20 x 4 section whose top layer thins from 0.5 to 0.01 over 10 units and ends at
 #    1.1 deg on the top side (a cap), one full interface below (the geometry of
 #    tests/pipeline/face_path_test.cpp);
@@ -76,12 +77,11 @@ for rep in $(seq "${REPS:-1}"); do
         --subdomains 1
       for n in 4 16; do
         pdd_timed "$out" "$exe" "$poly" "$input $area N=$n" "$rep" 2 --max-area "$area" \
-          --subdomains "$n" --geometric-sizing on
+          --subdomains "$n"
         pdd_timed "$out" "$exe" "$poly" "$input $area N=$n off" "$rep" 2 --max-area "$area" \
           --subdomains "$n" --geometric-sizing off
       done
-      pdd_timed "$out" "$exe" "$poly" "$input $area automatic" "$rep" 2 --max-area "$area" \
-        --geometric-sizing on
+      pdd_timed "$out" "$exe" "$poly" "$input $area automatic" "$rep" 2 --max-area "$area"
       if [ -n "$triangle" ]; then
         decimal=$(python3 -c "import sys; print(format(float(sys.argv[1]), 'f').rstrip('0'))" \
           "$area")
