@@ -103,6 +103,23 @@ TEST(FacePath, AutomaticNFallsBackToTheWholeDomainWhenTheEstimateExceedsTheBound
   EXPECT_GT(decoupled.mesh.triangles.size(), automatic.mesh.triangles.size());
 }
 
+// Automatic N compares the estimate times planning.face_over_refinement_margin with the bound:
+// the wedge at 0.001 is estimated to add 8,187 triangles of 121,951, so with a bound of 8 % (9,756)
+// the margin 1.35 (11,052) meshes it whole and a margin of 1 decouples.
+TEST(FacePath, AutomaticNKeepsAMarginOnTheEstimate) {
+  const pdd::pslg g = thinning_wedge();
+  pdd::generate_options o = options(0.001, 0);
+  o.planning.max_face_over_refinement = 0.08;
+  const pdd::generate_result kept = pdd::generate(g, o);
+  EXPECT_EQ(kept.statistics.path, "monolithic") << kept.statistics.plan_reason;
+  EXPECT_NE(kept.statistics.plan_reason.find("face_over_refinement_margin"), std::string::npos)
+      << kept.statistics.plan_reason;
+  o.planning.face_over_refinement_margin = 1.0;
+  const pdd::generate_result decoupled = pdd::generate(g, o);
+  EXPECT_EQ(decoupled.statistics.path, "geometric") << decoupled.statistics.plan_reason;
+  expect_verified(decoupled, g, 0.001);
+}
+
 // Geometric sizing auto plans the path for a requested N from planning.min_face_path_triangles
 // estimated triangles (the wedge at 0.003: about 41K) when a feature of a face is smaller than the
 // mesh, and leaves MADD from the faces below it: its rounds cost more than they save there.

@@ -125,7 +125,8 @@ void adopt_geometric(run_state& s, const planned_run& in, const generate_options
 /// The geometric path on a general PSLG (detail::face_geometric_decompose) on s.parts: the round
 /// estimated to add the fewest triangles replaces MADD's decomposition; the rounds go to the
 /// reason. Under automatic N, the whole domain when that round is estimated to add more than
-/// planning.max_face_over_refinement of the estimated triangles.
+/// planning.max_face_over_refinement of the estimated triangles (the estimate times
+/// planning.face_over_refinement_margin).
 template <GraphPartitioner P, Executor E>
 void adopt_face_geometric(run_state& s, const planned_run& in, const generate_options& o,
                           const madd_options& mo, const P& partitioner, const E& executor,
@@ -143,11 +144,13 @@ void adopt_face_geometric(run_state& s, const planned_run& in, const generate_op
   st.plan_reason += face_path_reason(r, o);
   const std::optional<face_path_cost>& cost = r.rounds[r.chosen].cost;
   const double bound = o.planning.max_face_over_refinement * st.estimated_triangles;
-  if (o.subdomains != 0 || !cost || !(cost->extra_triangles > bound)) return;
-  st.plan_reason += "; " + number_text(std::round(cost->extra_triangles)) + " > " +
+  const double margin = o.planning.face_over_refinement_margin;
+  if (o.subdomains != 0 || !cost || !(margin * cost->extra_triangles > bound)) return;
+  st.plan_reason += "; " + number_text(margin) + " x " +
+                    number_text(std::round(cost->extra_triangles)) + " > " +
                     number_text(100.0 * o.planning.max_face_over_refinement) +
-                    " % of the estimated triangles (planning.max_face_over_refinement): " +
-                    "decoupling would not pay, one subdomain";
+                    " % of the estimated triangles (planning.max_face_over_refinement, " +
+                    "face_over_refinement_margin): decoupling would not pay, one subdomain";
   adopt_whole_domain(s, whole_domain_plan(s.plan, st.plan_reason), o, st);
 }
 
